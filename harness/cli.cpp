@@ -1,0 +1,110 @@
+#include "harness/cli.hpp"
+
+#include "harness/parse.hpp"
+#include "harness/sweep.hpp"
+#include "reports/markdown_report.hpp"
+#include "reports/output_files.hpp"
+#include "reports/results_csv.hpp"
+
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <filesystem>
+#include <fmt/format.h>
+
+namespace rotbench {
+namespace {
+
+struct RunOptionsText {
+    std::string scenes, schemes, dts, t_end, out = "rotbench-out";
+    bool overwrite = false;
+};
+
+void list(std::ostream& out) {
+    out << "schemes:\n";
+    for (const auto& id : SchemeRegistry::instance().ids()) {
+        const auto& e = SchemeRegistry::instance().at(id, "scheme");
+        out << fmt::format("  {:<16} {}\n  {:<16} ({})\n", id, e.summary, "", e.source);
+    }
+    out << "scenes:\n";
+    for (const auto& id : SceneRegistry::instance().ids()) {
+        const auto& e = SceneRegistry::instance().at(id, "scene");
+        const auto scene = e.make();
+        std::string dts;
+        for (double dt : scene->default_dts()) dts += fmt::format("{}{:g}", dts.empty() ? "" : ",", dt);
+        out << fmt::format("  {:<16} {}\n  {:<16} (t_end {:g} s, dt {})\n", id, e.summary, "", scene->default_t_end(), dts);
+    }
+}
+
+std::filesystem::path prepare_output(const std::string& dir, bool overwrite) {
+    const std::filesystem::path path(dir);
+    std::error_code ec;
+    if (std::filesystem::exists(path / "results.csv") && !overwrite)
+        throw InputError("--out " + dir + " already holds results.csv; pass --overwrite or choose another directory");
+    std::filesystem::create_directories(path, ec);
+    if (ec || !std::filesystem::is_directory(path)) throw InputError("--out " + dir + ": cannot create the directory");
+    return path;
+}
+
+int run(const RunOptionsText& o, const std::string& command_line, std::ostream& out) {
+    SweepSpec spec;
+    if (!o.scenes.empty()) spec.scenes = parse_id_list(o.scenes, SceneRegistry::instance(), "scene");
+    if (!o.schemes.empty()) spec.schemes = parse_id_list(o.schemes, SchemeRegistry::instance(), "scheme");
+    if (!o.dts.empty()) spec.dts = parse_positive_list(o.dts, "--dt");
+    if (!o.t_end.empty()) spec.t_end = parse_positive(o.t_end, "--t-end");
+    const auto plan = plan_sweep(spec);  // every input checked before anything runs
+    const auto dir = prepare_output(o.out, o.overwrite);
+
+    const auto results = run_sweep(plan, {}, [&](const RunResult& r) {
+        out << fmt::format("{:<16} {:<16} dt={:<8g} {}\n", r.spec.scene, r.spec.scheme, r.spec.dt,
+                           r.failure.empty() ? "ok" : "FAILED: " + r.failure);
+    });
+    write_file_atomically(dir / "results.csv", results_csv(results));
+    write_file_atomically(dir / "report.md", markdown_report(results, command_line));
+    out << fmt::format("wrote {} and {}\n", (dir / "results.csv").string(), (dir / "report.md").string());
+    return 0;
+}
+
+}  // namespace
+
+int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
+    CLI::App app{"rotbench: verification and convergence harness for rigid-body rotation schemes"};
+    app.require_subcommand(1);
+    auto* list_cmd = app.add_subcommand("list", "list the registered schemes and scenes");
+    auto* run_cmd = app.add_subcommand("run", "run schemes on scenes and write results.csv and report.md");
+    RunOptionsText o;
+    run_cmd->add_option("--scenes", o.scenes, "comma list of scene ids (default: all)");
+    run_cmd->add_option("--schemes", o.schemes, "comma list of scheme ids (default: all)");
+    run_cmd->add_option("--dt", o.dts, "comma list of time steps in s (default: each scene's ladder)");
+    run_cmd->add_option("--t-end", o.t_end, "duration in s (default: each scene's)");
+    run_cmd->add_option("--out", o.out, "output directory")->capture_default_str();
+    run_cmd->add_flag("--overwrite", o.overwrite, "replace results already in --out");
+
+    std::string command_line = "rotbench";
+    for (int i = 1; i < argc; ++i) command_line += std::string(" ") + argv[i];
+    try {
+        const std::vector<std::string> commands = {list_cmd->get_name(), run_cmd->get_name()};
+        if (argc > 1 && argv[1][0] != '-' && std::find(commands.begin(), commands.end(), argv[1]) == commands.end())
+            throw InputError(std::string("unknown command '") + argv[1] + "'; valid commands: " + join(commands, ", "));
+        app.parse(argc, argv);
+        if (*list_cmd) {
+            list(out);
+            return 0;
+        }
+        return run(o, command_line, out);
+    } catch (const CLI::CallForHelp&) {
+        out << app.help();
+        return 0;
+    } catch (const CLI::ParseError& e) {
+        if (e.get_exit_code() == 0) {
+            out << app.help();
+            return 0;
+        }
+        err << "rotbench: " << e.what() << " (see rotbench --help)\n";
+        return 2;
+    } catch (const InputError& e) {
+        err << "rotbench: " << e.what() << "\n";
+        return 2;
+    }
+}
+
+}  // namespace rotbench

@@ -1,0 +1,11 @@
+// The command line (CLI11): `rotbench list`, `rotbench run`. Returns the exit status:
+// 0 done (unstable runs are results, not errors), 2 bad input.
+#pragma once
+
+#include <ostream>
+
+namespace rotbench {
+
+int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& err);
+
+}  // namespace rotbench

@@ -1,0 +1,42 @@
+#include "harness/parse.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+
+namespace rotbench {
+
+std::vector<std::string> split_commas(const std::string& text) {
+    std::vector<std::string> parts;
+    std::size_t start = 0;
+    while (true) {
+        const std::size_t comma = text.find(',', start);
+        parts.push_back(text.substr(start, comma - start));
+        if (comma == std::string::npos) return parts;
+        start = comma + 1;
+    }
+}
+
+double parse_positive(const std::string& text, const std::string& option) {
+    double value = 0.0;
+    const char* end = text.data() + text.size();
+    const auto [ptr, ec] = std::from_chars(text.data(), end, value);
+    if (text.empty() || ec != std::errc() || ptr != end)
+        throw InputError(option + ": '" + text + "' is not a number");
+    if (!std::isfinite(value) || value <= 0.0)
+        throw InputError(option + ": '" + text + "' must be a finite number greater than 0");
+    return value;
+}
+
+std::vector<double> parse_positive_list(const std::string& text, const std::string& option) {
+    std::vector<double> values;
+    for (const std::string& part : split_commas(text)) {
+        const double v = parse_positive(part, option);
+        if (std::find(values.begin(), values.end(), v) != values.end())
+            throw InputError(option + ": " + part + " is given twice");
+        values.push_back(v);
+    }
+    return values;
+}
+
+}  // namespace rotbench

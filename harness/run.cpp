@@ -1,0 +1,161 @@
+#include "harness/run.hpp"
+
+#include "harness/timing.hpp"
+#include "schemes/quaternion.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <exception>
+#include <fmt/format.h>
+#include <limits>
+
+namespace rotbench {
+namespace {
+
+constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+
+bool finite_state(const Bodies& b) {
+    for (std::size_t i = 0; i < b.size(); ++i) {
+        const Quat q = b.orientation[i];
+        if (!q.coeffs().allFinite() || !b.omega[i].allFinite() || !b.position[i].allFinite() ||
+            !b.velocity[i].allFinite())
+            return false;
+    }
+    return true;
+}
+
+// Accumulates the per-step errors and drifts of one run. Samples are the states after
+// each full step, t = dt, 2 dt, ..., N dt (the initial state is exact by construction).
+class MetricsObserver {
+public:
+    MetricsObserver(const Scene& scene, const Bodies& initial)
+        : scene_(scene),
+          energy0_(scene.energy(initial)),
+          energy_scale_(std::max(std::abs(energy0_), kinetic_energy(initial))),
+          momentum0_(total_angular_momentum(initial)) {}
+
+    bool operator()(std::int64_t n, double t, const Bodies& b) {
+        const double energy = finite_state(b) ? scene_.energy(b) : nan;
+        if (!std::isfinite(energy) || std::abs(energy - energy0_) > blowup_energy_factor * energy_scale_) {
+            fail_step_ = n;
+            fail_time_ = t;
+            return false;
+        }
+        if (energy0_ != 0.0) energy_drift_ = std::max(energy_drift_, std::abs(energy - energy0_) / std::abs(energy0_));
+        if (scene_.conserves_angular_momentum() && momentum0_.norm() > 0.0)
+            momentum_drift_ = std::max(momentum_drift_, (total_angular_momentum(b) - momentum0_).norm() / momentum0_.norm());
+        for (std::size_t i = 0; i < b.size(); ++i) {
+            const Quat q = b.orientation[i];
+            quat_norm_err_ = std::max(quat_norm_err_, std::abs(q.norm() - 1.0));
+            if (!scene_.has_reference()) continue;
+            const ReferenceState ref = scene_.reference(i, t);
+            const Quat q_unit = q.normalized();
+            const Vec3 error_body = to_body(q_unit, b.omega[i]) - to_body(ref.q, ref.omega);
+            squared_error_sum_ += error_body.cwiseAbs2();
+            ++samples_;
+            omega_err_max_ = std::max(omega_err_max_, (b.omega[i] - ref.omega).norm());
+            orientation_err_max_ = std::max(orientation_err_max_, rotation_angle_between(q_unit, ref.q));
+        }
+        return true;
+    }
+
+    bool unstable() const { return fail_step_ != 0; }
+
+    void write(RunResult& r) const {
+        auto add = [&](const char* name, double v) { r.metrics.emplace_back(name, unstable() ? nan : v); };
+        if (scene_.has_reference()) {
+            const Vec3 rms = (squared_error_sum_ / static_cast<double>(std::max<std::int64_t>(samples_, 1))).cwiseSqrt();
+            add("omega_rms_x", rms.x());
+            add("omega_rms_y", rms.y());
+            add("omega_rms_z", rms.z());
+            add("omega_err_max", omega_err_max_);
+            add("orientation_err_max", orientation_err_max_);
+        }
+        if (energy0_ != 0.0) add("energy_drift_max", energy_drift_);
+        if (scene_.conserves_angular_momentum()) add("momentum_drift_max", momentum_drift_);
+        add("quat_norm_err_max", quat_norm_err_);
+        if (unstable()) {
+            r.metrics.emplace_back("fail_step", static_cast<double>(fail_step_));
+            r.metrics.emplace_back("fail_time", fail_time_);
+            r.failure = fmt::format("blew up at step {} (t = {:.6g} s)", fail_step_, fail_time_);
+        }
+    }
+
+private:
+    const Scene& scene_;
+    double energy0_, energy_scale_;
+    Vec3 momentum0_;
+    Vec3 squared_error_sum_ = Vec3::Zero();
+    std::int64_t samples_ = 0;
+    double omega_err_max_ = 0, orientation_err_max_ = 0, energy_drift_ = 0, momentum_drift_ = 0, quat_norm_err_ = 0;
+    std::int64_t fail_step_ = 0;
+    double fail_time_ = 0;
+};
+
+}  // namespace
+
+bool RunResult::has(const std::string& name) const {
+    return std::any_of(metrics.begin(), metrics.end(), [&](const auto& m) { return m.first == name; });
+}
+
+double RunResult::value(const std::string& name) const {
+    for (const auto& [n, v] : metrics)
+        if (n == name) return v;
+    return nan;
+}
+
+std::int64_t step_count(double t_end, double dt) {
+    if (!std::isfinite(dt) || dt <= 0.0) throw InputError(fmt::format("time step must be a positive number, got {}", dt));
+    if (!std::isfinite(t_end) || t_end <= 0.0)
+        throw InputError(fmt::format("t-end must be a positive number, got {}", t_end));
+    if (t_end < dt) throw InputError(fmt::format("t-end {} is shorter than the time step {}", t_end, dt));
+    const double ratio = t_end / dt;
+    const double nearest = std::round(ratio);
+    const double steps = std::abs(ratio - nearest) <= 1e-9 * ratio ? nearest : std::ceil(ratio);
+    if (steps > 1e12) throw InputError(fmt::format("t-end / dt = {:.3g} steps is too many", steps));
+    return static_cast<std::int64_t>(steps);
+}
+
+RunResult run_one(const RunSpec& requested, const RunOptions& options) {
+    const auto& scene_entry = SceneRegistry::instance().at(requested.scene, "scene");
+    const auto& scheme_entry = SchemeRegistry::instance().at(requested.scheme, "scheme");
+    const auto scene = scene_entry.make();
+    RunResult result{requested, {}, {}};
+    if (result.spec.t_end == 0.0) result.spec.t_end = scene->default_t_end();
+    const double dt = result.spec.dt;
+    const std::int64_t steps = step_count(result.spec.t_end, dt);
+
+    std::int64_t force_evals = 0, done = 0;
+    bool unstable = false;
+    try {
+        Bodies bodies = scene->initial_state();
+        auto scheme = scheme_entry.make();
+        MetricsObserver observer(*scene, bodies);
+        done = simulate(*scene, *scheme, bodies, dt, steps, force_evals, observer);
+        observer.write(result);
+        unstable = observer.unstable();
+    } catch (const std::exception& e) {
+        result.failure = std::string("threw: ") + e.what();
+        unstable = true;
+    }
+
+    double cpu = nan;
+    if (!unstable && options.measure_time) {
+        // Timing run: the same loop without the observer, so the reference solution and
+        // the metrics are not charged to the scheme.
+        cpu = median_cpu_seconds([&] {
+            Bodies bodies = scene->initial_state();
+            auto scheme = scheme_entry.make();
+            std::int64_t evals = 0;
+            simulate(*scene, *scheme, bodies, dt, steps, evals, [](std::int64_t, double, const Bodies&) { return true; });
+        });
+    }
+    result.metrics.emplace_back("steps", static_cast<double>(done));
+    result.metrics.emplace_back("force_evals", static_cast<double>(force_evals));
+    result.metrics.emplace_back("cpu_seconds", cpu);
+    result.metrics.emplace_back("ns_per_step", cpu / static_cast<double>(steps) * 1e9);
+    result.metrics.emplace_back("unstable", unstable ? 1.0 : 0.0);
+    return result;
+}
+
+}  // namespace rotbench

@@ -1,0 +1,56 @@
+// One run: a scheme on a scene at one time step, and the metrics of DESIGN.md.
+#pragma once
+
+#include "harness/scene.hpp"
+#include "schemes/scheme.hpp"
+
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace rotbench {
+
+struct RunSpec {
+    std::string scene;
+    std::string scheme;
+    double dt = 0.0;
+    double t_end = 0.0;  // 0: the scene's default
+};
+
+struct RunResult {
+    RunSpec spec;
+    std::vector<std::pair<std::string, double>> metrics;  // names are the CSV contract
+    std::string failure;  // empty, or why the run stopped early
+
+    bool has(const std::string& name) const;
+    double value(const std::string& name) const;  // NaN when absent
+};
+
+// Number of steps for a duration: t_end / dt rounded to the nearest integer when it is
+// one to within 1e-9 relative, otherwise rounded up, so a run never stops short of t_end.
+// Throws InputError when dt <= 0, t_end <= 0, either is not finite, or t_end < dt.
+std::int64_t step_count(double t_end, double dt);
+
+// Blow-up rule: a run is unstable when any state component is NaN or infinite, or its
+// energy error exceeds 1e6 times the initial energy scale (max of |E0| and the initial
+// kinetic energy). It stops at that step; its error metrics are NaN.
+inline constexpr double blowup_energy_factor = 1e6;
+
+struct RunOptions {
+    bool measure_time = true;  // off in tests: the timing run repeats the whole simulation
+};
+
+// Runs and measures; never throws for a failing scheme (the failure is recorded), but
+// throws InputError for unknown ids or bad numbers.
+RunResult run_one(const RunSpec& spec, const RunOptions& options = {});
+
+// The loop shared by the measured run and the timing run. The scheme cannot reach the
+// scene: the one force evaluation per step happens here, and here it is counted.
+template <class Observer>
+std::int64_t simulate(const Scene& scene, RotationScheme& scheme, Bodies& bodies, double dt, std::int64_t steps,
+                      std::int64_t& force_evals, Observer&& observe);
+
+}  // namespace rotbench
+
+#include "harness/simulate.ipp"

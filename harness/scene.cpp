@@ -1,0 +1,32 @@
+#include "harness/scene.hpp"
+
+#include "schemes/quaternion.hpp"
+
+#include <stdexcept>
+
+namespace rotbench {
+
+ReferenceState Scene::reference(std::size_t, double) const {
+    throw std::logic_error("this scene has no reference solution");
+}
+
+double Scene::energy(const Bodies& bodies) const { return kinetic_energy(bodies); }
+
+double kinetic_energy(const Bodies& b) {
+    double e = 0.0;
+    for (std::size_t i = 0; i < b.size(); ++i) {
+        const Vec3 w_body = to_body(b.orientation[i], b.omega[i]);
+        e += 0.5 * b.mass[i] * b.velocity[i].squaredNorm() + 0.5 * w_body.dot(b.inertia[i].cwiseProduct(w_body));
+    }
+    return e;
+}
+
+Vec3 total_angular_momentum(const Bodies& b) {
+    Vec3 l = Vec3::Zero();
+    for (std::size_t i = 0; i < b.size(); ++i)
+        l += momentum_from_omega(b.orientation[i], b.inertia[i], b.omega[i]) +
+             b.mass[i] * b.position[i].cross(b.velocity[i]);
+    return l;
+}
+
+}  // namespace rotbench

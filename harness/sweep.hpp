@@ -1,0 +1,28 @@
+// A sweep: every selected scheme on every selected scene at every time step.
+#pragma once
+
+#include "harness/run.hpp"
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace rotbench {
+
+struct SweepSpec {
+    std::vector<std::string> scenes;   // empty: every registered scene
+    std::vector<std::string> schemes;  // empty: every registered scheme
+    std::vector<double> dts;           // empty: each scene's default ladder
+    double t_end = 0.0;                // 0: each scene's default
+};
+
+// The runs of a sweep in a fixed order (scene, scheme, dt as given). Checks every input
+// first, so a bad one is reported before anything runs (InputError).
+std::vector<RunSpec> plan_sweep(const SweepSpec& spec);
+
+// Runs the plan; a failing run is recorded and the sweep goes on. `on_done` is called
+// after each run (progress, incremental output).
+std::vector<RunResult> run_sweep(const std::vector<RunSpec>& plan, const RunOptions& options = {},
+                                 const std::function<void(const RunResult&)>& on_done = {});
+
+}  // namespace rotbench

@@ -1,0 +1,33 @@
+// CPU time of the calling thread, so that parallel runs do not inflate each other.
+#pragma once
+
+#include <algorithm>
+#include <ctime>
+#include <vector>
+
+namespace rotbench {
+
+inline double thread_cpu_seconds() {
+    timespec ts{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
+
+// Median CPU time of `work` after one discarded warm-up call; repeats at least
+// `min_repeats` times and until `min_total` seconds were measured (at most 31 repeats).
+template <class Work>
+double median_cpu_seconds(Work&& work, int min_repeats = 3, double min_total = 0.05) {
+    work();
+    std::vector<double> samples;
+    double total = 0.0;
+    while (samples.size() < 31 && (samples.size() < static_cast<std::size_t>(min_repeats) || total < min_total)) {
+        const double start = thread_cpu_seconds();
+        work();
+        samples.push_back(thread_cpu_seconds() - start);
+        total += samples.back();
+    }
+    std::nth_element(samples.begin(), samples.begin() + samples.size() / 2, samples.end());
+    return samples[samples.size() / 2];
+}
+
+}  // namespace rotbench

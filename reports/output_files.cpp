@@ -1,0 +1,30 @@
+#include "reports/output_files.hpp"
+
+#include "harness/registry.hpp"
+
+#include <cmath>
+#include <fmt/format.h>
+#include <fstream>
+
+namespace rotbench {
+
+void write_file_atomically(const std::filesystem::path& path, const std::string& content) {
+    const auto temporary = path.parent_path() / ("." + path.filename().string() + ".tmp");
+    {
+        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+        out << content;
+        out.flush();
+        if (!out) throw InputError("cannot write " + temporary.string());
+    }
+    std::error_code ec;
+    std::filesystem::rename(temporary, path, ec);
+    if (ec) throw InputError("cannot write " + path.string() + ": " + ec.message());
+}
+
+std::string format_number(double value) {
+    if (std::isnan(value)) return "nan";
+    if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
+    return fmt::format("{}", value);  // shortest representation that round-trips
+}
+
+}  // namespace rotbench

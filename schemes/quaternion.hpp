@@ -1,0 +1,53 @@
+// Quaternion and frame helpers shared by every scheme (seed 000, section 2.3).
+// Convention: q maps body to world, v_world = q v_body q^-1 (seed eq. 12).
+#pragma once
+
+#include "schemes/bodies.hpp"
+
+#include <cmath>
+
+namespace rotbench {
+
+// v' = q v q^-1 with q^-1 = q*/|q|^2 (seed eqs. 11-12), expanded as in eq. 13. Dividing by
+// |q|^2 keeps this an exact rotation when round-off has moved |q| off 1; the unit-only
+// shortcut (Eigen's q * v) returns R v - (|q|^2 - 1) v instead, and a scheme that goes
+// world -> body -> world every step then shrinks w by that factor at each step.
+inline Vec3 rotate(const Quat& q, const Vec3& v) {
+    const Vec3 t = q.vec().cross(v);
+    return v + (2.0 / q.squaredNorm()) * (q.w() * t + q.vec().cross(t));
+}
+inline Vec3 to_world(const Quat& q, const Vec3& v_body) { return rotate(q, v_body); }
+inline Vec3 to_body(const Quat& q, const Vec3& v_world) { return rotate(q.conjugate(), v_world); }
+
+// Incremental rotation q(omega, dt) for a constant angular velocity over dt (seed eq. 17).
+// sin(x)/x is evaluated by its series near zero so that tiny or zero rates stay exact.
+inline Quat rotation_increment(const Vec3& omega, double dt) {
+    const double half = 0.5 * omega.norm() * dt;
+    const double sinc = std::abs(half) < 1e-4 ? 1.0 - half * half / 6.0 : std::sin(half) / half;
+    const Vec3 v = (0.5 * dt * sinc) * omega;
+    return Quat(std::cos(half), v.x(), v.y(), v.z());
+}
+
+// Angular acceleration in the body frame from Euler's equations (seed eqs. 6, 34):
+// I' dw'/dt = T' - w' x (I' w').
+inline Vec3 euler_acceleration(const Vec3& omega_body, const Vec3& torque_body, const Vec3& inertia) {
+    return (torque_body - omega_body.cross(inertia.cwiseProduct(omega_body))).cwiseQuotient(inertia);
+}
+
+// w = I(q)^-1 H with the world inertia tensor I(q) = R(q) I' R(q)^T (seed eqs. 16, 45):
+// taken to the body frame, divided by the principal moments, taken back.
+inline Vec3 omega_from_momentum(const Quat& q, const Vec3& inertia, const Vec3& momentum_world) {
+    return to_world(q, to_body(q, momentum_world).cwiseQuotient(inertia));
+}
+
+inline Vec3 momentum_from_omega(const Quat& q, const Vec3& inertia, const Vec3& omega_world) {
+    return to_world(q, inertia.cwiseProduct(to_body(q, omega_world)));
+}
+
+// Rotation angle (rad, in [0, pi]) that takes orientation b to orientation a.
+inline double rotation_angle_between(const Quat& a, const Quat& b) {
+    const Quat d = b.conjugate() * a;
+    return 2.0 * std::atan2(d.vec().norm(), std::abs(d.w()));
+}
+
+}  // namespace rotbench

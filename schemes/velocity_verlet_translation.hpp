@@ -1,0 +1,32 @@
+// Velocity Verlet for the translation of every body (seed eqs. 18-24). Shared by all
+// rotation schemes, as in the seed, and run by the harness around each scheme's phases.
+#pragma once
+
+#include "schemes/bodies.hpp"
+
+namespace rotbench {
+
+// Eqs. 20-21: half kick with F^n, then drift with the half-step velocity.
+inline void translation_predict(Bodies& b, double dt) {
+    for (std::size_t i = 0; i < b.size(); ++i) {
+        const double kick = 0.5 * dt / b.mass[i];
+        b.velocity.x[i] += kick * b.force.x[i];
+        b.velocity.y[i] += kick * b.force.y[i];
+        b.velocity.z[i] += kick * b.force.z[i];
+        b.position.x[i] += dt * b.velocity.x[i];
+        b.position.y[i] += dt * b.velocity.y[i];
+        b.position.z[i] += dt * b.velocity.z[i];
+    }
+}
+
+// Eqs. 23-24: half kick with the force estimated at the new position.
+inline void translation_correct(Bodies& b, double dt) {
+    for (std::size_t i = 0; i < b.size(); ++i) {
+        const double kick = 0.5 * dt / b.mass[i];
+        b.velocity.x[i] += kick * b.force.x[i];
+        b.velocity.y[i] += kick * b.force.y[i];
+        b.velocity.z[i] += kick * b.force.z[i];
+    }
+}
+
+}  // namespace rotbench

@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# rotbench set-up: install the missing Debian packages, configure, build, then
+#   ./setup.sh report   produce the default report in out/default/
+#   ./setup.sh test     run the unit tests (CTest + Catch2)
+#   ./setup.sh build    only build
+# Nothing is downloaded at build time; every dependency is a Debian 12 package.
+set -euo pipefail
+cd "$(dirname "$0")"
+
+packages=(cmake ninja-build g++ libeigen3-dev catch2 libboost-dev libgsl-dev libfmt-dev
+          libcli11-dev libtomlplusplus-dev)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "ok installed" || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  echo "setup: installing ${missing[*]}"
+  sudo=""; [ "$(id -u)" -eq 0 ] || sudo="sudo"
+  $sudo apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+
+build=${BUILD_DIR:-build}
+cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build "$build" --parallel "$(nproc)"
+
+case "${1:-build}" in
+  build)  ;;
+  report) "$build/rotbench" run --out out/default --overwrite
+          echo "setup: report written to out/default/report.md" ;;
+  test)   ctest --test-dir "$build" --output-on-failure --parallel "$(nproc)" --label-exclude slow ;;
+  *)      echo "usage: ./setup.sh [build|report|test]" >&2; exit 2 ;;
+esac

@@ -1,0 +1,114 @@
+#include "harness/cli.hpp"
+
+#include <catch2/catch.hpp>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <sys/wait.h>
+
+using namespace rotbench;
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Cli {
+    int status;
+    std::string out, err;
+};
+
+Cli cli(std::vector<std::string> args) {
+    args.insert(args.begin(), "rotbench");
+    std::vector<const char*> argv;
+    for (const auto& a : args) argv.push_back(a.c_str());
+    std::ostringstream out, err;
+    const int status = run_cli(static_cast<int>(argv.size()), argv.data(), out, err);
+    return {status, out.str(), err.str()};
+}
+
+fs::path fresh_dir(const std::string& name) {
+    const fs::path dir = fs::temp_directory_path() / ("rotbench_test_" + name + "_" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    return dir;
+}
+
+std::string read(const fs::path& p) {
+    std::ifstream in(p);
+    return {std::istreambuf_iterator<char>(in), {}};
+}
+
+bool one_line(const std::string& s) { return !s.empty() && s.find('\n') == s.size() - 1; }
+
+}  // namespace
+
+TEST_CASE("rotbench list names every scheme and scene") {
+    const Cli r = cli({"list"});
+    CHECK(r.status == 0);
+    for (const char* id : {"direct", "munjiza_rk4", "zvw", "zvw_corrected", "cylinder_free"}) CHECK_THAT(r.out, Catch::Contains(id));
+}
+
+TEST_CASE("bad input: one line on stderr, exit status 2, nothing written") {
+    const fs::path dir = fresh_dir("bad");
+    const std::string out = dir.string();
+    struct Case {
+        std::vector<std::string> args;
+        std::string message;
+    };
+    const std::vector<Case> cases = {
+        {{"run", "--scenes", "cylinder", "--out", out}, "valid scenes: cylinder_free"},
+        {{"run", "--schemes", "direct,verlet", "--out", out}, "valid schemes: direct, munjiza_rk4"},
+        {{"run", "--schemes", "direct,direct", "--out", out}, "given twice"},
+        {{"run", "--dt", "0", "--out", out}, "must be a finite number greater than 0"},
+        {{"run", "--dt", "-1e-3", "--out", out}, "must be a finite number greater than 0"},
+        {{"run", "--dt", "1e-3,abc", "--out", out}, "'abc' is not a number"},
+        {{"run", "--dt", "1e-3,", "--out", out}, "'' is not a number"},
+        {{"run", "--dt", "nan", "--out", out}, "must be a finite number greater than 0"},
+        {{"run", "--dt", "inf", "--out", out}, "must be a finite number greater than 0"},
+        {{"run", "--t-end", "fast", "--out", out}, "--t-end: 'fast' is not a number"},
+        {{"run", "--scenes", "cylinder_free", "--dt", "1e-2", "--t-end", "1e-3", "--out", out}, "shorter than the time step"},
+        {{"run", "--bogus"}, "--bogus"},
+        {{"frobnicate"}, "frobnicate"},
+    };
+    for (const auto& c : cases) {
+        const Cli r = cli(c.args);
+        std::string shown;
+        for (const auto& a : c.args) shown += a + " ";
+        INFO(shown << "-> " << r.err);
+        CHECK(r.status == 2);
+        CHECK(one_line(r.err));
+        CHECK_THAT(r.err, Catch::Contains(c.message));
+    }
+    CHECK_FALSE(fs::exists(dir));
+}
+
+TEST_CASE("rotbench run writes results.csv (tidy contract) and report.md, and never clobbers silently") {
+    const fs::path dir = fresh_dir("run");
+    const std::vector<std::string> args = {"run", "--scenes", "cylinder_free", "--schemes", "direct,zvw_corrected",
+                                           "--dt", "1e-2,1e-3", "--out", dir.string()};
+    const Cli r = cli(args);
+    REQUIRE(r.status == 0);
+    const std::string csv = read(dir / "results.csv");
+    CHECK(csv.rfind("scene,scheme,dt,metric,value\n", 0) == 0);
+    CHECK_THAT(csv, Catch::Contains("cylinder_free,direct,0.01,omega_rms_x,0.66"));
+    CHECK_THAT(csv, Catch::Contains("cylinder_free,zvw_corrected,0.001,unstable,0\n"));
+    const std::string report = read(dir / "report.md");
+    CHECK_THAT(report, Catch::Contains("## Scene `cylinder_free`"));
+    CHECK_THAT(report, Catch::Contains("## Seed Table 1 reproduced"));
+
+    const Cli again = cli(args);
+    CHECK(again.status == 2);
+    CHECK_THAT(again.err, Catch::Contains("already holds results.csv"));
+    CHECK(read(dir / "results.csv") == csv);
+
+    std::vector<std::string> overwrite = args;
+    overwrite.push_back("--overwrite");
+    CHECK(cli(overwrite).status == 0);
+    fs::remove_all(dir);
+}
+
+TEST_CASE("the installed binary exits with status 2 on bad input") {
+    const std::string command = std::string(ROTBENCH_EXE) + " run --dt 0 > /dev/null 2>&1";
+    const int raw = std::system(command.c_str());
+    REQUIRE(WIFEXITED(raw));
+    CHECK(WEXITSTATUS(raw) == 2);
+}

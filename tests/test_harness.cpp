@@ -1,0 +1,123 @@
+#include "harness/sweep.hpp"
+#include "schemes/quaternion.hpp"
+
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+using namespace rotbench;
+
+namespace {
+
+// Test-only schemes that misbehave on purpose: the harness must contain them.
+struct ProducesNan {
+    struct Memory {};
+    static void start(const RigidBody&, Memory&) {}
+    static void predict(RigidBody& b, Memory&, double) { b.omega.x() = std::numeric_limits<double>::quiet_NaN(); }
+    static void correct(RigidBody&, Memory&, double) {}
+};
+struct Throws {
+    struct Memory {};
+    static void start(const RigidBody&, Memory&) {}
+    static void predict(RigidBody&, Memory&, double) { throw std::runtime_error("plug-in bug"); }
+    static void correct(RigidBody&, Memory&, double) {}
+};
+struct Explodes {  // doubles w every step: finite for a long time, but no energy bound holds
+    struct Memory {};
+    static void start(const RigidBody&, Memory&) {}
+    static void predict(RigidBody& b, Memory&, double) { b.omega *= 2.0; }
+    static void correct(RigidBody&, Memory&, double) {}
+};
+const RegisterScheme<ProducesNan> nan_scheme("test_nan", "test only: writes NaN", "tests");
+const RegisterScheme<Throws> throwing_scheme("test_throws", "test only: throws", "tests");
+const RegisterScheme<Explodes> exploding_scheme("test_explodes", "test only: w doubles each step", "tests");
+
+const std::vector<std::string> seed_schemes = {"direct", "munjiza_rk4", "zvw", "zvw_corrected"};
+
+RunResult quick_run(const std::string& scheme, double dt, double t_end = 0.0) {
+    return run_one({"cylinder_free", scheme, dt, t_end}, {.measure_time = false});
+}
+
+}  // namespace
+
+TEST_CASE("the harness evaluates forces exactly once per step, plus once at t = 0") {
+    for (const auto& scheme : seed_schemes) {
+        const RunResult r = quick_run(scheme, 1e-3);
+        INFO(scheme);
+        CHECK(r.value("steps") == 500);
+        CHECK(r.value("force_evals") == 501);
+        CHECK(r.value("unstable") == 0);
+    }
+}
+
+TEST_CASE("every run reports the metrics of DESIGN.md that apply to a torque-free scene with a reference") {
+    const RunResult r = quick_run("direct", 1e-3);
+    for (const char* m : {"omega_rms_x", "omega_rms_y", "omega_rms_z", "omega_err_max", "orientation_err_max",
+                          "energy_drift_max", "momentum_drift_max", "quat_norm_err_max", "steps", "force_evals",
+                          "cpu_seconds", "ns_per_step", "unstable"}) {
+        INFO(m);
+        CHECK(r.has(m));
+    }
+}
+
+TEST_CASE("the step count rule: t_end/dt rounded when it is an integer to 1e-9, else rounded up") {
+    CHECK(step_count(0.5, 1e-3) == 500);          // 0.5/1e-3 = 499.99999999999994 in binary
+    CHECK(step_count(0.5, 0.3) == 2);             // not a multiple: the run covers 0.6 s
+    CHECK(step_count(1.0, 1.0) == 1);
+    CHECK_THROWS_AS(step_count(0.5, 0.0), InputError);
+    CHECK_THROWS_AS(step_count(0.5, -1e-3), InputError);
+    CHECK_THROWS_AS(step_count(0.5, std::numeric_limits<double>::quiet_NaN()), InputError);
+    CHECK_THROWS_AS(step_count(1e-4, 1e-3), InputError);  // t_end shorter than dt
+}
+
+TEST_CASE("zvw and zvw_corrected coincide without torque (seed section 3.1.1)") {
+    const RunResult a = quick_run("zvw", 1e-4), b = quick_run("zvw_corrected", 1e-4);
+    for (const char* m : {"omega_rms_x", "omega_rms_y", "orientation_err_max", "energy_drift_max"}) CHECK(a.value(m) == b.value(m));
+}
+
+TEST_CASE("Munjiza's scheme keeps the angular momentum of a free body to round-off") {
+    // H is its state variable and no torque acts: only the rotations round.
+    CHECK(quick_run("munjiza_rk4", 1e-4).value("momentum_drift_max") < 1e-14);
+}
+
+TEST_CASE("a scheme that fails is recorded and the sweep goes on") {
+    const auto plan = plan_sweep({{"cylinder_free"}, {"test_nan", "test_throws", "test_explodes", "direct"}, {1e-3}, 0.0});
+    std::vector<std::string> seen;
+    const auto results = run_sweep(plan, {.measure_time = false}, [&](const RunResult& r) { seen.push_back(r.spec.scheme); });
+    REQUIRE(results.size() == 4);
+    CHECK(seen == std::vector<std::string>{"test_nan", "test_throws", "test_explodes", "direct"});
+
+    const RunResult& nan_run = results[0];
+    CHECK(nan_run.value("unstable") == 1);
+    CHECK(nan_run.value("fail_step") == 1);
+    CHECK(std::isnan(nan_run.value("omega_rms_x")));
+    CHECK(nan_run.failure.find("blew up at step 1") != std::string::npos);
+
+    CHECK(results[1].value("unstable") == 1);
+    CHECK(results[1].failure == "threw: plug-in bug");
+
+    // |w| doubles per step, E grows 4x: 4^n > 1e6 + 1 first at n = 10.
+    CHECK(results[2].value("unstable") == 1);
+    CHECK(results[2].value("fail_step") == 10);
+
+    CHECK(results[3].value("unstable") == 0);
+    CHECK(results[3].value("steps") == 500);
+}
+
+TEST_CASE("bad sweep inputs are rejected before anything runs, naming the valid ids") {
+    try {
+        plan_sweep({{"cylinder_fre"}, {}, {}, 0.0});
+        FAIL("no error");
+    } catch (const InputError& e) {
+        CHECK_THAT(e.what(), Catch::Contains("unknown scene 'cylinder_fre'") && Catch::Contains("cylinder_free"));
+    }
+    try {
+        plan_sweep({{"cylinder_free"}, {"rk4"}, {}, 0.0});
+        FAIL("no error");
+    } catch (const InputError& e) {
+        CHECK_THAT(e.what(), Catch::Contains("unknown scheme 'rk4'") && Catch::Contains("munjiza_rk4") &&
+                                 Catch::Contains("zvw_corrected"));
+    }
+    CHECK_THROWS_AS(plan_sweep({{"cylinder_free"}, {"direct"}, {1e-3}, 1e-4}), InputError);
+}
