@@ -1,5 +1,6 @@
 #include "harness/cli.hpp"
 
+#include "harness/config.hpp"
 #include "harness/parse.hpp"
 #include "harness/sweep.hpp"
 #include "reports/markdown_report.hpp"
@@ -15,11 +16,34 @@ namespace rotbench {
 namespace {
 
 struct RunOptionsText {
-    std::string scenes, schemes, dts, t_end, out = "rotbench-out";
+    std::string scenes, schemes, dts, t_end, config, out = "rotbench-out";
+    std::vector<std::string> settings;
     bool overwrite = false;
 };
 
+// The sweep the options describe: the config file first, the command line over it.
+SweepSpec sweep_spec(const RunOptionsText& o) {
+    SweepSpec spec = o.config.empty() ? SweepSpec{} : load_config(o.config);
+    if (!o.scenes.empty()) spec.scenes = parse_id_list(o.scenes, SceneRegistry::instance(), "scene");
+    if (!o.schemes.empty()) spec.schemes = parse_id_list(o.schemes, SchemeRegistry::instance(), "scheme");
+    if (!o.dts.empty()) spec.dts = parse_positive_list(o.dts, "--dt");
+    if (!o.t_end.empty()) spec.t_end = parse_positive(o.t_end, "--t-end");
+    for (const auto& s : o.settings) add_setting(spec, s);
+    return spec;
+}
+
+void list_params(const std::string& scene_id, std::ostream& out) {
+    const auto scene = SceneRegistry::instance().at(scene_id, "scene").make();
+    out << fmt::format("parameters of {} (--set {}.KEY=VALUE, or [{}] in a config):\n", scene_id, scene_id, scene_id);
+    for (const auto& e : scene->params.entries()) {
+        std::string value;
+        for (double v : e.value) value += fmt::format("{}{}", value.empty() ? "" : ",", v);
+        out << fmt::format("  {:<12} {:<24} {:<10} {}\n", e.key, value, e.unit, e.help);
+    }
+}
+
 void list(std::ostream& out) {
+    out << "(rotbench list --params SCENE lists a scene's parameters)\n";
     out << "schemes:\n";
     for (const auto& id : SchemeRegistry::instance().ids()) {
         const auto& e = SchemeRegistry::instance().at(id, "scheme");
@@ -28,10 +52,10 @@ void list(std::ostream& out) {
     out << "scenes:\n";
     for (const auto& id : SceneRegistry::instance().ids()) {
         const auto& e = SceneRegistry::instance().at(id, "scene");
-        const auto scene = e.make();
+        const auto scene = make_scene(id);
         std::string dts;
         for (double dt : scene->default_dts()) dts += fmt::format("{}{:g}", dts.empty() ? "" : ",", dt);
-        out << fmt::format("  {:<16} {}\n  {:<16} (t_end {:g} s, dt {})\n", id, e.summary, "", scene->default_t_end(), dts);
+        out << fmt::format("  {:<16} {}\n  {:<16} (t_end {:g} s, dt {})\n", id, e.summary, "", scene->t_end(), dts);
     }
 }
 
@@ -46,12 +70,7 @@ std::filesystem::path prepare_output(const std::string& dir, bool overwrite) {
 }
 
 int run(const RunOptionsText& o, const std::string& command_line, std::ostream& out) {
-    SweepSpec spec;
-    if (!o.scenes.empty()) spec.scenes = parse_id_list(o.scenes, SceneRegistry::instance(), "scene");
-    if (!o.schemes.empty()) spec.schemes = parse_id_list(o.schemes, SchemeRegistry::instance(), "scheme");
-    if (!o.dts.empty()) spec.dts = parse_positive_list(o.dts, "--dt");
-    if (!o.t_end.empty()) spec.t_end = parse_positive(o.t_end, "--t-end");
-    const auto plan = plan_sweep(spec);  // every input checked before anything runs
+    const auto plan = plan_sweep(sweep_spec(o));  // every input checked before anything runs
     const auto dir = prepare_output(o.out, o.overwrite);
 
     const auto results = run_sweep(plan, {}, [&](const RunResult& r) {
@@ -78,6 +97,10 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
     run_cmd->add_option("--t-end", o.t_end, "duration in s (default: each scene's)");
     run_cmd->add_option("--out", o.out, "output directory")->capture_default_str();
     run_cmd->add_flag("--overwrite", o.overwrite, "replace results already in --out");
+    run_cmd->add_option("--set", o.settings, "scene parameter, SCENE.KEY=VALUE (repeatable; VALUE may be a comma list)");
+    run_cmd->add_option("--config", o.config, "TOML file with [run] selections and [SCENE] parameters");
+    std::string params_of;
+    list_cmd->add_option("--params", params_of, "list the parameters of this scene");
 
     std::string command_line = "rotbench";
     for (int i = 1; i < argc; ++i) command_line += std::string(" ") + argv[i];
@@ -87,7 +110,8 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
             throw InputError(std::string("unknown command '") + argv[1] + "'; valid commands: " + join(commands, ", "));
         app.parse(argc, argv);
         if (*list_cmd) {
-            list(out);
+            if (params_of.empty()) list(out);
+            else list_params(params_of, out);
             return 0;
         }
         return run(o, command_line, out);

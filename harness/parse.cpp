@@ -17,12 +17,26 @@ std::vector<std::string> split_commas(const std::string& text) {
     }
 }
 
-double parse_positive(const std::string& text, const std::string& option) {
+namespace {
+
+double parse_number(const std::string& text, const std::string& option) {
     double value = 0.0;
     const char* end = text.data() + text.size();
     const auto [ptr, ec] = std::from_chars(text.data(), end, value);
-    if (text.empty() || ec != std::errc() || ptr != end)
-        throw InputError(option + ": '" + text + "' is not a number");
+    if (text.empty() || ec != std::errc() || ptr != end) throw InputError(option + ": '" + text + "' is not a number");
+    return value;
+}
+
+}  // namespace
+
+double parse_finite(const std::string& text, const std::string& option) {
+    const double value = parse_number(text, option);
+    if (!std::isfinite(value)) throw InputError(option + ": '" + text + "' must be a finite number");
+    return value;
+}
+
+double parse_positive(const std::string& text, const std::string& option) {
+    const double value = parse_number(text, option);
     if (!std::isfinite(value) || value <= 0.0)
         throw InputError(option + ": '" + text + "' must be a finite number greater than 0");
     return value;

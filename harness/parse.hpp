@@ -12,7 +12,10 @@ namespace rotbench {
 // A finite number > 0, the whole text consumed ("1e-3" yes; "1e-3s", "", "nan", "-1" no).
 double parse_positive(const std::string& text, const std::string& option);
 
-// A comma list of such numbers; duplicates are rejected.
+// A finite number, the whole text consumed.
+double parse_finite(const std::string& text, const std::string& option);
+
+// A comma list of positive numbers; duplicates are rejected.
 std::vector<double> parse_positive_list(const std::string& text, const std::string& option);
 
 // A comma list of registered ids (valid ones listed on error); duplicates are rejected.

@@ -117,11 +117,12 @@ std::int64_t step_count(double t_end, double dt) {
 }
 
 RunResult run_one(const RunSpec& requested, const RunOptions& options) {
-    const auto& scene_entry = SceneRegistry::instance().at(requested.scene, "scene");
     const auto& scheme_entry = SchemeRegistry::instance().at(requested.scheme, "scheme");
-    const auto scene = scene_entry.make();
+    ParamOverrides overrides = requested.params;
+    if (requested.t_end > 0.0) overrides.push_back({"t_end", {requested.t_end}});
+    const auto scene = make_scene(requested.scene, overrides);
     RunResult result{requested, {}, {}};
-    if (result.spec.t_end == 0.0) result.spec.t_end = scene->default_t_end();
+    result.spec.t_end = scene->t_end();
     const double dt = result.spec.dt;
     const std::int64_t steps = step_count(result.spec.t_end, dt);
 

@@ -15,7 +15,8 @@ struct RunSpec {
     std::string scene;
     std::string scheme;
     double dt = 0.0;
-    double t_end = 0.0;  // 0: the scene's default
+    double t_end = 0.0;      // 0: the scene's default
+    ParamOverrides params;  // scene parameters other than t_end, as given by the user
 };
 
 struct RunResult {

@@ -6,6 +6,13 @@
 
 namespace rotbench {
 
+std::unique_ptr<Scene> make_scene(const std::string& id, const ParamOverrides& overrides) {
+    auto scene = SceneRegistry::instance().at(id, "scene").make();
+    scene->params.apply(overrides);
+    scene->prepare();
+    return scene;
+}
+
 ReferenceState Scene::reference(std::size_t, double) const {
     throw std::logic_error("this scene has no reference solution");
 }

@@ -2,6 +2,7 @@
 // has one, a reference solution. A scene models only the physics it needs.
 #pragma once
 
+#include "harness/params.hpp"
 #include "harness/registry.hpp"
 #include "schemes/bodies.hpp"
 
@@ -19,8 +20,14 @@ class Scene {
 public:
     virtual ~Scene() = default;
 
+    // Declared by the scene's constructor (with `t_end` always), then overridden by the
+    // user, then `prepare` validates them (InputError naming the key) and builds what
+    // depends on them.
+    Params params;
+    virtual void prepare() {}
+
     virtual Bodies initial_state() const = 0;
-    virtual double default_t_end() const = 0;
+    double t_end() const { return params.number("t_end"); }
     virtual std::vector<double> default_dts() const = 0;
 
     // The one force/torque evaluation of a step: fills bodies.force and bodies.torque
@@ -41,10 +48,16 @@ using SceneRegistry = Registry<Scene>;
 template <class S>
 struct RegisterScene {
     RegisterScene(std::string id, std::string summary, std::string source, std::string notes = "") {
-        SceneRegistry::instance().add({std::move(id), std::move(summary), std::move(source), std::move(notes),
-                                       [] { return std::make_unique<S>(); }});
+        SceneRegistry::instance().add({id, std::move(summary), std::move(source), std::move(notes), [id] {
+                                           auto scene = std::make_unique<S>();
+                                           scene->params.set_owner(id);
+                                           return scene;
+                                       }});
     }
 };
+
+// The scene `id` with its parameters overridden and validated (InputError on bad input).
+std::unique_ptr<Scene> make_scene(const std::string& id, const ParamOverrides& overrides = {});
 
 double kinetic_energy(const Bodies& bodies);
 Vec3 total_angular_momentum(const Bodies& bodies);  // about the origin, world frame

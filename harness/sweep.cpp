@@ -1,5 +1,7 @@
 #include "harness/sweep.hpp"
 
+#include <algorithm>
+
 namespace rotbench {
 
 std::vector<RunSpec> plan_sweep(const SweepSpec& spec) {
@@ -8,15 +10,24 @@ std::vector<RunSpec> plan_sweep(const SweepSpec& spec) {
     const auto scene_ids = spec.scenes.empty() ? scenes.ids() : spec.scenes;
     const auto scheme_ids = spec.schemes.empty() ? schemes.ids() : spec.schemes;
     for (const auto& id : scheme_ids) schemes.at(id, "scheme");
+    for (const auto& [scene_id, overrides] : spec.params) {
+        scenes.at(scene_id, "scene");
+        if (std::find(scene_ids.begin(), scene_ids.end(), scene_id) == scene_ids.end())
+            throw InputError("parameters are set for scene '" + scene_id + "', which is not selected");
+    }
 
     std::vector<RunSpec> plan;
     for (const auto& scene_id : scene_ids) {
-        const auto scene = scenes.at(scene_id, "scene").make();
-        const double t_end = spec.t_end > 0.0 ? spec.t_end : scene->default_t_end();
+        const auto found = spec.params.find(scene_id);
+        const ParamOverrides overrides = found == spec.params.end() ? ParamOverrides{} : found->second;
+        ParamOverrides with_t_end = overrides;
+        if (spec.t_end > 0.0) with_t_end.push_back({"t_end", {spec.t_end}});
+        const auto scene = make_scene(scene_id, with_t_end);  // validates every override
+        const double t_end = scene->t_end();
         const auto dts = spec.dts.empty() ? scene->default_dts() : spec.dts;
         for (double dt : dts) step_count(t_end, dt);  // validates dt against t_end
         for (const auto& scheme_id : scheme_ids)
-            for (double dt : dts) plan.push_back({scene_id, scheme_id, dt, t_end});
+            for (double dt : dts) plan.push_back({scene_id, scheme_id, dt, t_end, overrides});
     }
     return plan;
 }

@@ -4,6 +4,7 @@
 #include "harness/run.hpp"
 
 #include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,7 @@ struct SweepSpec {
     std::vector<std::string> schemes;  // empty: every registered scheme
     std::vector<double> dts;           // empty: each scene's default ladder
     double t_end = 0.0;                // 0: each scene's default
+    std::map<std::string, ParamOverrides> params;  // scene id -> overrides (--set, config)
 };
 
 // The runs of a sweep in a fixed order (scene, scheme, dt as given). Checks every input

@@ -54,7 +54,7 @@ std::vector<Table1Comparison> compare_table1(const std::vector<RunResult>& resul
     std::vector<Table1Comparison> out;
     for (const Table1Entry& e : seed_table1()) {
         for (const RunResult& r : results) {
-            if (r.spec.scene != "cylinder_free" || r.spec.scheme != e.scheme || r.spec.t_end != 0.5 ||
+            if (r.spec.scene != "cylinder_free" || r.spec.scheme != e.scheme || r.spec.t_end != 0.5 || !r.spec.params.empty() ||
                 std::abs(r.spec.dt / e.dt - 1.0) > 1e-12)
                 continue;
             const double computed = r.value(std::string("omega_rms_") + e.component);

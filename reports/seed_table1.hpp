@@ -32,8 +32,8 @@ struct Table1Comparison {
     bool agrees;                 // |relative_difference| <= table1_tolerance
 };
 
-// The entries whose runs are in `results` (scene cylinder_free at its published
-// duration, 0.5 s); empty when there are none.
+// The entries whose runs are in `results` (scene cylinder_free with its published
+// parameters and duration, 0.5 s); empty when there are none.
 std::vector<Table1Comparison> compare_table1(const std::vector<RunResult>& results);
 
 }  // namespace rotbench

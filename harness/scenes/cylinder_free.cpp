@@ -2,36 +2,47 @@
 // radius 0.5 m, height 1.5 m and density 1 (so I'z/I'x = 0.5) spins freely with
 // w0 = (0, 1, 100) rad/s in both frames (q0 = identity) for 0.5 s. No force, no torque.
 // Exact answer: w'x = sin 50t, w'y = cos 50t, w'z = 100 (the seed's eq. 65b prints sin
-// for w'y; cos is what Euler's equations give for this start) and the closed-form
-// orientation of FreeSymmetricTop.
+// for w'y; cos is what Euler's equations give for this start), and the closed-form
+// orientation of FreeRigidBody.
 #include "harness/scene.hpp"
-#include "references/free_symmetric_top.hpp"
+#include "references/free_rigid_body.hpp"
 
 #include <numbers>
+#include <optional>
 
 namespace rotbench {
 namespace {
 
 class CylinderFree final : public Scene {
 public:
-    static constexpr double radius = 0.5, height = 1.5, density = 1.0;
+    CylinderFree() {
+        params.declare("radius", {0.5}, "m", "cylinder radius");
+        params.declare("height", {1.5}, "m", "cylinder height (along body z)");
+        params.declare("density", {1.0}, "kg/m^3", "density");
+        params.declare("omega0", {0.0, 1.0, 100.0}, "rad/s", "initial angular velocity, body frame");
+        params.declare("q0", {1.0, 0.0, 0.0, 0.0}, "-", "initial orientation (w, x, y, z), body to world");
+        params.declare("t_end", {0.5}, "s", "duration");
+    }
 
-    CylinderFree()
-        : mass_(density * std::numbers::pi * radius * radius * height),
-          inertia_transverse_(mass_ * (3.0 * radius * radius + height * height) / 12.0),
-          inertia_axial_(0.5 * mass_ * radius * radius),
-          omega0_(0.0, 1.0, 100.0),
-          exact_(inertia_transverse_, inertia_axial_, Quat::Identity(), omega0_) {}
+    void prepare() override {
+        const double r = params.positive("radius"), h = params.positive("height");
+        mass_ = params.positive("density") * std::numbers::pi * r * r * h;
+        const double transverse = mass_ * (3.0 * r * r + h * h) / 12.0;
+        inertia_ = Vec3(transverse, transverse, 0.5 * mass_ * r * r);
+        params.positive("t_end");
+        exact_.emplace(inertia_, params.quat("q0"), params.vec3("omega0"));
+    }
 
     Bodies initial_state() const override {
         Bodies b;
         b.resize(1);
         b.mass[0] = mass_;
-        b.inertia.set(0, Vec3(inertia_transverse_, inertia_transverse_, inertia_axial_));
-        b.omega.set(0, omega0_);  // q0 = identity: body and world frames coincide
+        b.inertia.set(0, inertia_);
+        const Quat q0 = params.quat("q0");
+        b.orientation.set(0, q0);
+        b.omega.set(0, q0 * params.vec3("omega0"));
         return b;
     }
-    double default_t_end() const override { return 0.5; }
     std::vector<double> default_dts() const override { return {1e-2, 1e-3, 1e-4, 1e-5, 1e-6}; }  // Table 1
 
     void evaluate_forces(Bodies& b, double) const override {
@@ -41,14 +52,14 @@ public:
 
     bool has_reference() const override { return true; }
     ReferenceState reference(std::size_t, double t) const override {
-        return {exact_.orientation(t), exact_.omega_world(t)};
+        return {exact_->orientation(t), exact_->omega_world(t)};
     }
     bool conserves_angular_momentum() const override { return true; }
 
 private:
-    double mass_, inertia_transverse_, inertia_axial_;
-    Vec3 omega0_;
-    FreeSymmetricTop exact_;
+    double mass_ = 0;
+    Vec3 inertia_;
+    std::optional<FreeRigidBody> exact_;
 };
 
 const RegisterScene<CylinderFree> registration(
