@@ -1,6 +1,7 @@
 #include "harness/cli.hpp"
 
 #include "harness/config.hpp"
+#include "harness/export.hpp"
 #include "harness/parse.hpp"
 #include "harness/sweep.hpp"
 #include "reports/markdown_report.hpp"
@@ -18,6 +19,7 @@ namespace {
 struct RunOptionsText {
     std::string scenes, schemes, dts, t_end, config, out = "rotbench-out";
     std::vector<std::string> settings;
+    int energy_series = 400;
     bool overwrite = false;
 };
 
@@ -73,14 +75,43 @@ int run(const RunOptionsText& o, const std::string& command_line, std::ostream& 
     const auto plan = plan_sweep(sweep_spec(o));  // every input checked before anything runs
     const auto dir = prepare_output(o.out, o.overwrite);
 
-    const auto results = run_sweep(plan, {}, [&](const RunResult& r) {
+    RunOptions options;
+    options.series_samples = o.energy_series;
+    const auto results = run_sweep(plan, options, [&](const RunResult& r) {
         out << fmt::format("{:<16} {:<16} dt={:<8g} {}\n", r.spec.scene, r.spec.scheme, r.spec.dt,
                            r.failure.empty() ? "ok" : "FAILED: " + r.failure);
     });
     write_file_atomically(dir / "results.csv", results_csv(results));
-    write_file_atomically(dir / "report.md", markdown_report(results, command_line));
+    write_file_atomically(dir / "report.md", markdown_report(results, command_line, dir));
     out << fmt::format("wrote {} and {}\n", (dir / "results.csv").string(), (dir / "report.md").string());
     return 0;
+}
+
+struct ExportOptionsText {
+    std::string scene, scheme, dt, t_end, out;
+    std::vector<std::string> settings;
+    int samples = 1000;
+};
+
+// The scene of an export, with --t-end and --set applied (--set takes KEY=VALUE or SCENE.KEY=VALUE).
+std::unique_ptr<Scene> export_scene(const ExportOptionsText& o) {
+    SweepSpec spec;
+    for (const auto& s : o.settings) add_setting(spec, s.find('.') < s.find('=') ? s : o.scene + "." + s);
+    ParamOverrides overrides;
+    for (const auto& [scene_id, list] : spec.params) {
+        if (scene_id != o.scene) throw InputError("--set names scene '" + scene_id + "', but --scene is '" + o.scene + "'");
+        overrides = list;
+    }
+    if (!o.t_end.empty()) overrides.push_back({"t_end", {parse_positive(o.t_end, "--t-end")}});
+    return make_scene(o.scene, overrides);
+}
+
+void write_export(const std::string& out, const std::string& csv, std::ostream& log) {
+    const std::filesystem::path path(out);
+    if (!path.parent_path().empty() && !std::filesystem::is_directory(path.parent_path()))
+        throw InputError("--out " + out + ": the directory " + path.parent_path().string() + " does not exist");
+    write_file_atomically(path, csv);
+    log << "wrote " << out << "\n";
 }
 
 }  // namespace
@@ -99,19 +130,45 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
     run_cmd->add_flag("--overwrite", o.overwrite, "replace results already in --out");
     run_cmd->add_option("--set", o.settings, "scene parameter, SCENE.KEY=VALUE (repeatable; VALUE may be a comma list)");
     run_cmd->add_option("--config", o.config, "TOML file with [run] selections and [SCENE] parameters");
+    run_cmd->add_option("--energy-series", o.energy_series, "energy samples per run in scenes that plot it (0: none)")
+        ->capture_default_str()
+        ->check(CLI::NonNegativeNumber);
+    ExportOptionsText ref_o, traj_o;
+    auto* reference_cmd = app.add_subcommand("reference", "export a scene's reference trajectory as CSV");
+    auto* trajectory_cmd = app.add_subcommand("trajectory", "export one scheme's trajectory on a scene as CSV");
+    for (auto [cmd, o] : {std::pair{reference_cmd, &ref_o}, std::pair{trajectory_cmd, &traj_o}}) {
+        cmd->add_option("--scene", o->scene, "scene id")->required();
+        cmd->add_option("--t-end", o->t_end, "duration in s (default: the scene's)");
+        cmd->add_option("--set", o->settings, "scene parameter KEY=VALUE (repeatable)");
+        cmd->add_option("--samples", o->samples, "at most this many intervals between rows")->capture_default_str();
+        cmd->add_option("--out", o->out, "output CSV file")->required();
+    }
+    trajectory_cmd->add_option("--scheme", traj_o.scheme, "scheme id")->required();
+    trajectory_cmd->add_option("--dt", traj_o.dt, "time step in s")->required();
     std::string params_of;
     list_cmd->add_option("--params", params_of, "list the parameters of this scene");
 
     std::string command_line = "rotbench";
     for (int i = 1; i < argc; ++i) command_line += std::string(" ") + argv[i];
     try {
-        const std::vector<std::string> commands = {list_cmd->get_name(), run_cmd->get_name()};
+        const std::vector<std::string> commands = {list_cmd->get_name(), run_cmd->get_name(), reference_cmd->get_name(),
+                                                   trajectory_cmd->get_name()};
         if (argc > 1 && argv[1][0] != '-' && std::find(commands.begin(), commands.end(), argv[1]) == commands.end())
             throw InputError(std::string("unknown command '") + argv[1] + "'; valid commands: " + join(commands, ", "));
         app.parse(argc, argv);
         if (*list_cmd) {
             if (params_of.empty()) list(out);
             else list_params(params_of, out);
+            return 0;
+        }
+        if (*reference_cmd) {
+            write_export(ref_o.out, reference_csv(*export_scene(ref_o), ref_o.samples), out);
+            return 0;
+        }
+        if (*trajectory_cmd) {
+            SchemeRegistry::instance().at(traj_o.scheme, "scheme");
+            const double dt = parse_positive(traj_o.dt, "--dt");
+            write_export(traj_o.out, scheme_trajectory_csv(*export_scene(traj_o), traj_o.scheme, dt, traj_o.samples), out);
             return 0;
         }
         return run(o, command_line, out);

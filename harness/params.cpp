@@ -73,9 +73,9 @@ Vec3 Params::positive_vec3(const std::string& key) const {
     return v;
 }
 
-Vec3 Params::principal_moments(const std::string& key) const {
+Vec3 Params::principal_moments(const std::string& key, bool real_body) const {
     const Vec3 i = positive_vec3(key);
-    for (int k = 0; k < 3; ++k)
+    for (int k = 0; k < 3 && real_body; ++k)
         require(i[k] <= (i[(k + 1) % 3] + i[(k + 2) % 3]) * (1.0 + 1e-12), key,
                 fmt::format("principal moments {}, {}, {} violate the triangle inequality (I{} > I{} + I{})", i.x(),
                             i.y(), i.z(), k + 1, (k + 1) % 3 + 1, (k + 2) % 3 + 1));

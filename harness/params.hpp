@@ -22,6 +22,7 @@ public:
     };
 
     void set_owner(std::string scene_id) { scene_id_ = std::move(scene_id); }
+    const std::string& owner() const { return scene_id_; }
 
     void declare(std::string key, std::vector<double> value, std::string unit, std::string help);
 
@@ -43,8 +44,9 @@ public:
     // The checks most scenes need.
     double positive(const std::string& key) const;
     Vec3 positive_vec3(const std::string& key) const;
-    // Principal moments: positive, and each at most the sum of the other two (a real body).
-    Vec3 principal_moments(const std::string& key) const;
+    // Principal moments: positive and, for a real body, each at most the sum of the other
+    // two. `real_body = false` admits any positive moments (Euler's equations alone).
+    Vec3 principal_moments(const std::string& key, bool real_body = true) const;
 
 private:
     const Entry& find(const std::string& key) const;

@@ -1,6 +1,7 @@
 #include "harness/run.hpp"
 
 #include "harness/timing.hpp"
+#include "references/reference.hpp"
 #include "schemes/quaternion.hpp"
 
 #include <algorithm>
@@ -28,11 +29,19 @@ bool finite_state(const Bodies& b) {
 // each full step, t = dt, 2 dt, ..., N dt (the initial state is exact by construction).
 class MetricsObserver {
 public:
-    MetricsObserver(const Scene& scene, const Bodies& initial)
+    MetricsObserver(const Scene& scene, const Reference* reference, const Bodies& initial, std::int64_t series_stride)
         : scene_(scene),
+          reference_(reference),
+          series_stride_(series_stride),
           energy0_(scene.energy(initial)),
           energy_scale_(std::max(std::abs(energy0_), kinetic_energy(initial))),
-          momentum0_(total_angular_momentum(initial)) {}
+          momentum0_(total_angular_momentum(initial)) {
+        if (series_stride_ > 0) {
+            series_columns_ = {"t", "energy_error"};
+            for (const auto& part : scene_.energy_parts(initial)) series_columns_.push_back(part.first);
+            record(0.0, initial);
+        }
+    }
 
     bool operator()(std::int64_t n, double t, const Bodies& b) {
         const double energy = finite_state(b) ? scene_.energy(b) : nan;
@@ -41,14 +50,15 @@ public:
             fail_time_ = t;
             return false;
         }
-        if (energy0_ != 0.0) energy_drift_ = std::max(energy_drift_, std::abs(energy - energy0_) / std::abs(energy0_));
+        if (energy0_ != 0.0 && scene_.conserves_energy()) energy_drift_ = std::max(energy_drift_, std::abs(energy - energy0_) / std::abs(energy0_));
+        if (series_stride_ > 0 && n % series_stride_ == 0) record(t, b);
         if (scene_.conserves_angular_momentum() && momentum0_.norm() > 0.0)
             momentum_drift_ = std::max(momentum_drift_, (total_angular_momentum(b) - momentum0_).norm() / momentum0_.norm());
         for (std::size_t i = 0; i < b.size(); ++i) {
             const Quat q = b.orientation[i];
             quat_norm_err_ = std::max(quat_norm_err_, std::abs(q.norm() - 1.0));
-            if (!scene_.has_reference()) continue;
-            const ReferenceState ref = scene_.reference(i, t);
+            if (!reference_) continue;
+            const ReferenceState ref = reference_->at(i, n, t);
             const Quat q_unit = q.normalized();
             const Vec3 error_body = to_body(q_unit, b.omega[i]) - to_body(ref.q, ref.omega);
             squared_error_sum_ += error_body.cwiseAbs2();
@@ -63,7 +73,7 @@ public:
 
     void write(RunResult& r) const {
         auto add = [&](const char* name, double v) { r.metrics.emplace_back(name, unstable() ? nan : v); };
-        if (scene_.has_reference()) {
+        if (reference_) {
             const Vec3 rms = (squared_error_sum_ / static_cast<double>(std::max<std::int64_t>(samples_, 1))).cwiseSqrt();
             add("omega_rms_x", rms.x());
             add("omega_rms_y", rms.y());
@@ -71,7 +81,7 @@ public:
             add("omega_err_max", omega_err_max_);
             add("orientation_err_max", orientation_err_max_);
         }
-        if (energy0_ != 0.0) add("energy_drift_max", energy_drift_);
+        if (energy0_ != 0.0 && scene_.conserves_energy()) add("energy_drift_max", energy_drift_);
         if (scene_.conserves_angular_momentum()) add("momentum_drift_max", momentum_drift_);
         add("quat_norm_err_max", quat_norm_err_);
         if (unstable()) {
@@ -79,10 +89,22 @@ public:
             r.metrics.emplace_back("fail_time", fail_time_);
             r.failure = fmt::format("blew up at step {} (t = {:.6g} s)", fail_step_, fail_time_);
         }
+        r.series_columns = series_columns_;
+        r.series = series_;
     }
 
 private:
+    void record(double t, const Bodies& b) {
+        std::vector<double> row = {t, energy0_ != 0.0 ? (scene_.energy(b) - energy0_) / std::abs(energy0_) : nan};
+        for (const auto& [name, value] : scene_.energy_parts(b)) row.push_back(value);
+        series_.push_back(std::move(row));
+    }
+
     const Scene& scene_;
+    const Reference* reference_;
+    std::int64_t series_stride_;
+    std::vector<std::string> series_columns_;
+    std::vector<std::vector<double>> series_;
     double energy0_, energy_scale_;
     Vec3 momentum0_;
     Vec3 squared_error_sum_ = Vec3::Zero();
@@ -131,7 +153,11 @@ RunResult run_one(const RunSpec& requested, const RunOptions& options) {
     try {
         Bodies bodies = scene->initial_state();
         auto scheme = scheme_entry.make();
-        MetricsObserver observer(*scene, bodies);
+        const auto reference = make_reference(*scene, dt, steps);
+        const std::int64_t stride = options.series_samples > 0 && scene->reports_energy_series()
+                                        ? std::max<std::int64_t>(1, steps / options.series_samples)
+                                        : 0;
+        MetricsObserver observer(*scene, reference.get(), bodies, stride);
         done = simulate(*scene, *scheme, bodies, dt, steps, force_evals, observer);
         observer.write(result);
         unstable = observer.unstable();

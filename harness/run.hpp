@@ -23,6 +23,10 @@ struct RunResult {
     RunSpec spec;
     std::vector<std::pair<std::string, double>> metrics;  // names are the CSV contract
     std::string failure;  // empty, or why the run stopped early
+    // Energy against time, when asked for: columns t, energy_error ((E - E0)/|E0|), then
+    // the scene's energy parts by name.
+    std::vector<std::string> series_columns;
+    std::vector<std::vector<double>> series;
 
     bool has(const std::string& name) const;
     double value(const std::string& name) const;  // NaN when absent
@@ -40,6 +44,8 @@ inline constexpr double blowup_energy_factor = 1e6;
 
 struct RunOptions {
     bool measure_time = true;  // off in tests: the timing run repeats the whole simulation
+    int series_samples = 0;    // > 0: record about this many energy samples (and t = 0),
+                               // in scenes that report an energy series
 };
 
 // Runs and measures; never throws for a failing scheme (the failure is recorded), but

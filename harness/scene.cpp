@@ -13,20 +13,32 @@ std::unique_ptr<Scene> make_scene(const std::string& id, const ParamOverrides& o
     return scene;
 }
 
-ReferenceState Scene::reference(std::size_t, double) const {
-    throw std::logic_error("this scene has no reference solution");
+ReferenceState Scene::exact(std::size_t, double) const {
+    throw std::logic_error("this scene has no closed-form solution");
 }
 
 double Scene::energy(const Bodies& bodies) const { return kinetic_energy(bodies); }
 
-double kinetic_energy(const Bodies& b) {
+std::vector<std::pair<std::string, double>> Scene::energy_parts(const Bodies& bodies) const {
+    return {{"translational", translational_energy(bodies)}, {"rotational", rotational_energy(bodies)}};
+}
+
+double translational_energy(const Bodies& b) {
+    double e = 0.0;
+    for (std::size_t i = 0; i < b.size(); ++i) e += 0.5 * b.mass[i] * b.velocity[i].squaredNorm();
+    return e;
+}
+
+double rotational_energy(const Bodies& b) {
     double e = 0.0;
     for (std::size_t i = 0; i < b.size(); ++i) {
         const Vec3 w_body = to_body(b.orientation[i], b.omega[i]);
-        e += 0.5 * b.mass[i] * b.velocity[i].squaredNorm() + 0.5 * w_body.dot(b.inertia[i].cwiseProduct(w_body));
+        e += 0.5 * w_body.dot(b.inertia[i].cwiseProduct(w_body));
     }
     return e;
 }
+
+double kinetic_energy(const Bodies& b) { return translational_energy(b) + rotational_energy(b); }
 
 Vec3 total_angular_momentum(const Bodies& b) {
     Vec3 l = Vec3::Zero();

@@ -7,6 +7,9 @@
 #include "schemes/bodies.hpp"
 
 #include <cstddef>
+#include <optional>
+#include <string>
+#include <utility>
 #include <vector>
 
 namespace rotbench {
@@ -34,12 +37,29 @@ public:
     // (world frame) from the current positions, orientations and velocities.
     virtual void evaluate_forces(Bodies& bodies, double t) const = 0;
 
-    virtual bool has_reference() const { return false; }
-    virtual ReferenceState reference(std::size_t body, double t) const;
+    // Where the reference solution comes from: a closed form (`exact`), or Boost.Odeint
+    // on this scene's own equations of motion (references/odeint_reference.hpp).
+    enum class ReferenceKind { none, closed_form, odeint };
+    virtual ReferenceKind reference_kind() const { return ReferenceKind::none; }
+    bool has_reference() const { return reference_kind() != ReferenceKind::none; }
+    virtual ReferenceState exact(std::size_t body, double t) const;
+    // An Odeint scene whose angular velocity alone has a closed form gives it here (body frame).
+    virtual std::optional<Vec3> exact_omega_body(std::size_t, double) const { return std::nullopt; }
 
-    // Total mechanical energy; the default is the kinetic energy, right for free bodies.
+    // Signed gaps of the contacts the force model can switch on (> 0: apart). Where a gap
+    // changes sign the forces are not smooth, and the Odeint reference lands a step there.
+    virtual std::vector<double> contact_gaps(const Bodies&) const { return {}; }
+
+    // Total mechanical energy, and its parts by name (summing to it); the default is the
+    // kinetic energy, right for free bodies.
     virtual double energy(const Bodies& bodies) const;
-    // True where the total angular momentum is conserved (no external torque).
+    virtual std::vector<std::pair<std::string, double>> energy_parts(const Bodies& bodies) const;
+    // What the true motion conserves: the energy unless external work is done (then
+    // energy_drift_max would measure physics, not error), the angular momentum only
+    // without external torque.
+    virtual bool conserves_energy() const { return true; }
+    // Scenes whose report shows the energy against time (the seed's Figures 8-11).
+    virtual bool reports_energy_series() const { return false; }
     virtual bool conserves_angular_momentum() const { return false; }
 };
 
@@ -60,6 +80,8 @@ struct RegisterScene {
 std::unique_ptr<Scene> make_scene(const std::string& id, const ParamOverrides& overrides = {});
 
 double kinetic_energy(const Bodies& bodies);
+double translational_energy(const Bodies& bodies);
+double rotational_energy(const Bodies& bodies);
 Vec3 total_angular_momentum(const Bodies& bodies);  // about the origin, world frame
 
 }  // namespace rotbench

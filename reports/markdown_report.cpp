@@ -1,6 +1,7 @@
 #include "reports/markdown_report.hpp"
 
 #include "build_info.hpp"
+#include "reports/energy_series.hpp"
 #include "reports/seed_table1.hpp"
 
 #include <algorithm>
@@ -8,6 +9,7 @@
 #include <cmath>
 #include <fmt/chrono.h>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <set>
 
 namespace rotbench {
@@ -109,7 +111,8 @@ void schemes_section(std::string& md, const std::vector<RunResult>& results) {
 
 }  // namespace
 
-std::string markdown_report(const std::vector<RunResult>& results, const std::string& command_line) {
+std::string markdown_report(const std::vector<RunResult>& results, const std::string& command_line,
+                            const std::filesystem::path& dir) {
     std::string md = "# rotbench report\n\n";
     md += fmt::format("rotbench {} (commit {}), {} {}, flags `{}`; generated {:%Y-%m-%d %H:%M} UTC.\n\n",
                       build_info::version, build_info::commit, build_info::compiler, build_info::build_type,
@@ -122,6 +125,7 @@ std::string markdown_report(const std::vector<RunResult>& results, const std::st
                       results.size(), unstable);
     for (const auto& scene : unique_in_order(results, &RunSpec::scene)) scene_section(md, scene, results);
     table1_section(md, results);
+    md += energy_series_section(results, dir);
     schemes_section(md, results);
     md += "## Metrics\n\n"
           "- `omega_rms_x/y/z`: root mean square over all steps of the body-frame angular-velocity error "

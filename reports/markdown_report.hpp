@@ -4,11 +4,14 @@
 
 #include "harness/run.hpp"
 
+#include <filesystem>
 #include <string>
 #include <vector>
 
 namespace rotbench {
 
-std::string markdown_report(const std::vector<RunResult>& results, const std::string& command_line);
+// Also writes the files the report links to (series, plots) under `dir`.
+std::string markdown_report(const std::vector<RunResult>& results, const std::string& command_line,
+                            const std::filesystem::path& dir);
 
 }  // namespace rotbench

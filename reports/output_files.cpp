@@ -5,11 +5,14 @@
 #include <cmath>
 #include <fmt/format.h>
 #include <fstream>
+#include <unistd.h>
 
 namespace rotbench {
 
 void write_file_atomically(const std::filesystem::path& path, const std::string& content) {
-    const auto temporary = path.parent_path() / ("." + path.filename().string() + ".tmp");
+    // The temporary name carries the process id: two processes writing the same file
+    // (a shared cache) each rename a complete file.
+    const auto temporary = path.parent_path() / fmt::format(".{}.{}.tmp", path.filename().string(), ::getpid());
     {
         std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
         out << content;

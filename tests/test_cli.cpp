@@ -55,7 +55,7 @@ TEST_CASE("bad input: one line on stderr, exit status 2, nothing written") {
         std::string message;
     };
     const std::vector<Case> cases = {
-        {{"run", "--scenes", "cylinder", "--out", out}, "valid scenes: cylinder_free"},
+        {{"run", "--scenes", "cylinder", "--out", out}, "valid scenes: asymmetric_free, cylinder_free, dipole_top"},
         {{"run", "--schemes", "direct,verlet", "--out", out}, "valid schemes: direct, munjiza_rk4"},
         {{"run", "--schemes", "direct,direct", "--out", out}, "given twice"},
         {{"run", "--dt", "0", "--out", out}, "must be a finite number greater than 0"},

@@ -50,8 +50,8 @@ public:
         b.torque.set(0, Vec3::Zero());
     }
 
-    bool has_reference() const override { return true; }
-    ReferenceState reference(std::size_t, double t) const override {
+    ReferenceKind reference_kind() const override { return ReferenceKind::closed_form; }
+    ReferenceState exact(std::size_t, double t) const override {
         return {exact_->orientation(t), exact_->omega_world(t)};
     }
     bool conserves_angular_momentum() const override { return true; }

@@ -1,0 +1,50 @@
+// The scaffolding shared by the torque-free single-body scenes (`asymmetric_free`,
+// `dzhanibekov`): one body, no force, the closed-form FreeRigidBody as the reference.
+// A scene declares its parameters and says how to read the initial angular velocity.
+#pragma once
+
+#include "harness/scene.hpp"
+#include "references/free_rigid_body.hpp"
+
+#include <optional>
+
+namespace rotbench {
+
+class FreeTopScene : public Scene {
+public:
+    Bodies initial_state() const override {
+        Bodies b;
+        b.resize(1);
+        b.mass[0] = 1.0;
+        b.inertia.set(0, inertia_);
+        b.orientation.set(0, q0_);
+        b.omega.set(0, q0_ * omega0_body_);
+        return b;
+    }
+    void evaluate_forces(Bodies& b, double) const override {
+        b.force.set(0, Vec3::Zero());
+        b.torque.set(0, Vec3::Zero());
+    }
+    ReferenceKind reference_kind() const override { return ReferenceKind::closed_form; }
+    ReferenceState exact(std::size_t, double t) const override { return {exact_->orientation(t), exact_->omega_world(t)}; }
+    bool conserves_angular_momentum() const override { return true; }
+
+protected:
+    // Called by the scene's prepare() once it has read its parameters.
+    void set_motion(const Vec3& inertia, const Quat& q0, const Vec3& omega0_body) {
+        params.positive("t_end");
+        inertia_ = inertia;
+        q0_ = q0;
+        omega0_body_ = omega0_body;
+        params.require(omega0_body.allFinite(), "omega0", "must be finite");
+        exact_.emplace(inertia, q0, omega0_body);
+    }
+    const FreeRigidBody& exact_motion() const { return *exact_; }
+
+private:
+    Vec3 inertia_, omega0_body_;
+    Quat q0_;
+    std::optional<FreeRigidBody> exact_;
+};
+
+}  // namespace rotbench

@@ -1,0 +1,17 @@
+// The on-disk cache of reference trajectories. Directory: $ROTBENCH_CACHE if set ("off"
+// disables it), else $XDG_CACHE_HOME/rotbench, else $HOME/.cache/rotbench. A file is named
+// by a hash of its key and stores the key itself, so a hash collision is a miss. Files are
+// written atomically; a cache that cannot be read or written is a miss, never an error.
+#pragma once
+
+#include "references/trajectory.hpp"
+
+#include <optional>
+#include <string>
+
+namespace rotbench {
+
+std::optional<Trajectory> load_cached(const std::string& scene_id, const std::string& key);
+void store_cached(const std::string& scene_id, const std::string& key, const Trajectory& trajectory);
+
+}  // namespace rotbench

@@ -1,0 +1,106 @@
+#include "reports/energy_series.hpp"
+
+#include "reports/gnuplot.hpp"
+#include "reports/output_files.hpp"
+#include "reports/seed_figures.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+#include <map>
+
+namespace rotbench {
+namespace {
+
+std::string dt_tag(double dt) { return fmt::format("{:g}", dt); }
+
+std::string series_file(const RunResult& r) {
+    return fmt::format("energy_{}_{}_dt{}.csv", r.spec.scene, r.spec.scheme, dt_tag(r.spec.dt));
+}
+
+void write_series(const RunResult& r, const std::filesystem::path& dir) {
+    std::string csv;
+    for (std::size_t c = 0; c < r.series_columns.size(); ++c) csv += (c ? "," : "") + r.series_columns[c];
+    csv += "\n";
+    for (const auto& row : r.series) {
+        for (std::size_t c = 0; c < row.size(); ++c) csv += (c ? "," : "") + format_number(row[c]);
+        csv += "\n";
+    }
+    write_file_atomically(dir / series_file(r), csv);
+}
+
+std::string plot_script(const std::string& scene, double dt, const std::vector<const RunResult*>& runs) {
+    std::string s = fmt::format(
+        "set terminal svg size 800,450 dynamic noenhanced font 'sans,12'\n"
+        "set output 'energy_{}_dt{}.svg'\n"
+        "set datafile separator ','\n"
+        "set title 'Relative energy error, {}, dt = {:g} s'\n"
+        "set xlabel 't (s)'\nset ylabel '(E - E0) / |E0|'\nset key outside right\nset grid\n"
+        "plot ",
+        scene, dt_tag(dt), scene, dt);
+    for (std::size_t i = 0; i < runs.size(); ++i)
+        s += fmt::format("{}'../series/{}' using 1:2 with lines lw 1.5 title '{}'", i ? ", \\\n     " : "",
+                         series_file(*runs[i]), runs[i]->spec.scheme);
+    return s + "\n";
+}
+
+const std::vector<std::string> seed_schemes = {"direct", "munjiza_rk4", "zvw", "zvw_corrected"};
+
+double final_error(const RunResult& r) { return r.series.empty() ? NAN : std::abs(r.series.back().at(1)); }
+
+}  // namespace
+
+std::string energy_series_section(const std::vector<RunResult>& results, const std::filesystem::path& dir) {
+    std::map<std::pair<std::string, double>, std::vector<const RunResult*>> groups;
+    for (const auto& r : results)
+        if (!r.series.empty()) groups[{r.spec.scene, r.spec.dt}].push_back(&r);
+    if (groups.empty()) return "";
+    std::filesystem::create_directories(dir / "series");
+    std::filesystem::create_directories(dir / "plots");
+
+    std::string md = "## Energy against time\n\n"
+                     "Relative energy error (E - E0)/|E0| of each scheme; the seed's Figures 9-11 show the same "
+                     "quantity for the bouncing fibre. Data: `series/`, plots and their gnuplot scripts: `plots/`.\n\n";
+    for (const auto& [key, runs] : groups) {
+        const auto& [scene, dt] = key;
+        for (const RunResult* r : runs) write_series(*r, dir / "series");
+        const auto script = dir / "plots" / fmt::format("energy_{}_dt{}.gp", scene, dt_tag(dt));
+        const bool drawn = draw_with_gnuplot(script, plot_script(scene, dt, runs));
+        md += fmt::format("### `{}`, dt = {:g} s\n\n", scene, dt);
+        md += drawn ? fmt::format("![energy error, {} dt = {:g}](plots/energy_{}_dt{}.svg)\n\n", scene, dt, scene, dt_tag(dt))
+                    : fmt::format("(plot not drawn: gnuplot is not installed; script `plots/{}`)\n\n", script.filename().string());
+
+        std::vector<const RunResult*> ranked = runs;
+        std::stable_sort(ranked.begin(), ranked.end(), [](const RunResult* a, const RunResult* b) {
+            return final_error(*a) < final_error(*b);
+        });
+        md += "| scheme | |energy error| at the end | largest |energy error| |\n|---|---:|---:|\n";
+        for (const RunResult* r : ranked)
+            md += fmt::format("| {} | {:.3e} | {:.3e} |\n", r->spec.scheme, final_error(*r), r->value("energy_drift_max"));
+        std::string order;
+        for (const RunResult* r : ranked) order += (order.empty() ? "" : " < ") + r->spec.scheme;
+        md += fmt::format("\nOrdering by the final error, best first: {}.\n", order);
+
+        for (const auto& published : seed_energy_orderings()) {
+            if (published.scene != scene || std::abs(published.dt / dt - 1.0) > 1e-12) continue;
+            // The computed ranking of the seed's schemes: it must equal the published one,
+            // or, where the seed only names the best scheme, start with it.
+            std::vector<std::string> computed;
+            for (const RunResult* r : ranked)
+                if (std::find(seed_schemes.begin(), seed_schemes.end(), r->spec.scheme) != seed_schemes.end())
+                    computed.push_back(r->spec.scheme);
+            const auto& claim = published.best_to_worst;
+            const bool agrees = claim.size() == 1 ? (!computed.empty() && computed.front() == claim.front()) : computed == claim;
+            md += fmt::format("The seed: {}. Here the ordering {} the seed's{}.\n", published.statement,
+                              agrees ? "agrees with" : "differs from",
+                              agrees ? "" : fmt::format(" (seed, best first: {}; here: {})",
+                                                        fmt::join(published.best_to_worst, " < "),
+                                                        fmt::join(computed, " < ")));
+        }
+        md += "\n";
+    }
+    return md;
+}
+
+}  // namespace rotbench

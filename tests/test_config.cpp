@@ -1,0 +1,83 @@
+#include "harness/config.hpp"
+#include "harness/export.hpp"
+
+#include <catch2/catch.hpp>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+using namespace rotbench;
+
+namespace {
+
+std::string write_temp(const std::string& name, const std::string& text) {
+    const auto path = std::filesystem::temp_directory_path() / ("rotbench_" + std::to_string(::getpid()) + "_" + name);
+    std::ofstream(path) << text;
+    return path.string();
+}
+
+std::string error_of(const std::string& toml) {
+    try {
+        load_config(write_temp("bad.toml", toml));
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+}  // namespace
+
+TEST_CASE("a TOML config selects runs and sets scene parameters") {
+    const SweepSpec spec = load_config(write_temp("good.toml",
+                                                  "[run]\nscenes = [\"dipole_top\"]\nschemes = [\"direct\", \"zvw\"]\n"
+                                                  "dt = [1e-2, 0.005]\nt_end = 2\n[dipole_top]\nfield = [0, 0, 2]\n"));
+    CHECK(spec.scenes == std::vector<std::string>{"dipole_top"});
+    CHECK(spec.schemes == std::vector<std::string>{"direct", "zvw"});
+    CHECK(spec.dts == std::vector<double>{1e-2, 0.005});
+    CHECK(spec.t_end == 2.0);
+    REQUIRE(spec.params.at("dipole_top").size() == 1);
+    CHECK(spec.params.at("dipole_top")[0].second == std::vector<double>{0, 0, 2});
+}
+
+TEST_CASE("config errors name the file, line and column, and the key") {
+    CHECK_THAT(error_of("[run\n"), Catch::Contains("bad.toml:1:"));
+    CHECK_THAT(error_of("[run]\nbogus = 1\n"), Catch::Contains(":2:") && Catch::Contains("unknown key 'bogus'"));
+    CHECK_THAT(error_of("[run]\ndt = [1e-3, -1]\n"), Catch::Contains(":2:") && Catch::Contains("greater than 0"));
+    CHECK_THAT(error_of("[run]\nschemes = [\"verlet\"]\n"), Catch::Contains(":2:") && Catch::Contains("valid schemes"));
+    CHECK_THAT(error_of("[nowhere]\nx = 1\n"), Catch::Contains(":1:") && Catch::Contains("unknown table [nowhere]"));
+    CHECK_THAT(error_of("[dipole_top]\nfield = [0, 0]\n"), Catch::Contains(":2:") && Catch::Contains("dipole_top.field: expects 3 values"));
+    CHECK_THAT(error_of("[dipole_top]\nfield = \"up\"\n"), Catch::Contains(":2:") && Catch::Contains("'field' must be a number"));
+    CHECK_THAT(error_of("[dipole_top]\nmass = 3\n"), Catch::Contains("unknown parameter 'dipole_top.mass'"));
+}
+
+TEST_CASE("--set SCENE.KEY=VALUE") {
+    SweepSpec spec;
+    add_setting(spec, "torqued_cylinder.omega0=1,-2.5,3");
+    CHECK(spec.params.at("torqued_cylinder")[0].second == std::vector<double>{1, -2.5, 3});
+    CHECK_THROWS_WITH(add_setting(spec, "torqued_cylinder.omega0"), Catch::Contains("expected SCENE.KEY=VALUE"));
+    CHECK_THROWS_WITH(add_setting(spec, "nope.x=1"), Catch::Contains("unknown scene 'nope'"));
+    CHECK_THROWS_WITH(add_setting(spec, "torqued_cylinder.torque=abc"), Catch::Contains("'abc' is not a number"));
+    CHECK_THROWS_WITH(add_setting(spec, "torqued_cylinder.torque=inf"), Catch::Contains("must be a finite number"));
+}
+
+TEST_CASE("reference and trajectory exports have the contract columns") {
+    const auto scene = make_scene("asymmetric_free");
+    const std::string reference = reference_csv(*scene, 10);
+    std::istringstream lines(reference);
+    std::string header, line;
+    std::getline(lines, header);
+    CHECK(header == trajectory_header);
+    int rows = 0;
+    double first_energy = 0, worst = 0;
+    while (std::getline(lines, line)) {
+        const double energy = std::stod(line.substr(line.rfind(',') + 1));
+        if (rows++ == 0) first_energy = energy;
+        worst = std::max(worst, std::abs(energy / first_energy - 1.0));
+    }
+    CHECK(rows == 11);
+    CHECK(worst < 1e-14);  // the closed form conserves energy to round-off
+
+    const std::string run = scheme_trajectory_csv(*scene, "zvw", 1e-2, 40);
+    CHECK(run.rfind(std::string(trajectory_header) + "\n", 0) == 0);
+    CHECK(std::count(run.begin(), run.end(), '\n') == 42);  // header + t = 0 + 40 rows (2000 steps, every 50th)
+}

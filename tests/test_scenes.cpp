@@ -1,0 +1,180 @@
+// Every scene against its reference engine, the engine against a second stepper, and
+// every registered scheme on every scene.
+#include "harness/run.hpp"
+#include "references/odeint_reference.hpp"
+#include "references/reference_cache.hpp"
+#include "schemes/quaternion.hpp"
+
+#include <catch2/catch.hpp>
+#include <cstdlib>
+#include <filesystem>
+
+using namespace rotbench;
+
+namespace {
+
+std::vector<double> equally_spaced(double t_end, int samples) {
+    std::vector<double> t;
+    for (int k = 0; k <= samples; ++k) t.push_back(t_end * k / samples);
+    return t;
+}
+
+Bodies state_at(const Scene& scene, const Trajectory& trajectory, std::size_t sample) {
+    Bodies b = scene.initial_state();
+    const ReferenceState s = trajectory.state(sample, 0);
+    b.orientation.set(0, s.q);
+    b.omega.set(0, s.omega);
+    b.position.set(0, trajectory.position(sample, 0));
+    b.velocity.set(0, trajectory.velocity(sample, 0));
+    return b;
+}
+
+const std::vector<std::string> seed_schemes = {"direct", "munjiza_rk4", "zvw", "zvw_corrected"};
+
+}  // namespace
+
+TEST_CASE("closed-form scenes agree with Odeint on the same equations of motion") {
+    // Odeint at tolerance 1e-14 over the default duration; dzhanibekov passes near the
+    // separatrix, where both solutions are ~1e3 times more sensitive to rounding.
+    for (const auto& [id, tolerance] : std::vector<std::pair<std::string, double>>{
+             {"cylinder_free", 1e-11}, {"asymmetric_free", 1e-11}, {"dzhanibekov", 1e-8}}) {
+        INFO(id);
+        const auto scene = make_scene(id);
+        const auto times = equally_spaced(scene->t_end(), 200);
+        const Trajectory odeint = integrate_scene(*scene, times, OdeMethod::fehlberg78);
+        double omega_err = 0, angle = 0;
+        for (std::size_t k = 0; k < times.size(); ++k) {
+            const ReferenceState exact = scene->exact(0, times[k]), ode = odeint.state(k, 0);
+            omega_err = std::max(omega_err, (exact.omega - ode.omega).norm() / exact.omega.norm());
+            angle = std::max(angle, rotation_angle_between(exact.q, ode.q.normalized()));
+        }
+        CHECK(omega_err < tolerance);
+        CHECK(angle < tolerance);
+    }
+}
+
+TEST_CASE("torqued_cylinder: the closed-form angular velocity agrees with Odeint") {
+    const auto scene = make_scene("torqued_cylinder");
+    const auto times = equally_spaced(scene->t_end(), 200);
+    const Trajectory odeint = integrate_scene(*scene, times, OdeMethod::fehlberg78);
+    double worst = 0;
+    for (std::size_t k = 0; k < times.size(); ++k) {
+        const ReferenceState s = odeint.state(k, 0);
+        const Vec3 exact = *scene->exact_omega_body(0, times[k]);
+        worst = std::max(worst, (to_body(s.q, s.omega) - exact).norm() / exact.norm());
+    }
+    CHECK(worst < 1e-12);  // Odeint at 1e-14 over 5 s: a few hundred steps of 1e-14
+}
+
+TEST_CASE("the Odeint reference agrees with Bulirsch-Stoer") {
+    SECTION("smooth scenes: to 1e-11 (both run at tolerance 1e-14)") {
+        for (const char* id : {"cylinder_free", "asymmetric_free", "torqued_cylinder", "dipole_top"}) {
+            INFO(id);
+            const CrossCheck c = cross_check(*make_scene(id));
+            CHECK(c.omega_relative < 1e-11);
+            CHECK(c.angle < 1e-11);
+        }
+    }
+    SECTION("fibre_bounce: to 1e-6 rad, 1e-7 in w, 1e-8 in position") {
+        // Each bounce magnifies a difference between the two methods; what the two must
+        // share is the physics (energy, next test) and the trajectory to these bounds.
+        const CrossCheck c = cross_check(*make_scene("fibre_bounce"));
+        CHECK(c.omega_relative < 1e-7);
+        CHECK(c.angle < 1e-6);
+        CHECK(c.position < 1e-8);
+    }
+}
+
+TEST_CASE("the fibre's Odeint reference conserves energy to 1e-9 relative (issue 3)") {
+    const auto scene = make_scene("fibre_bounce");
+    for (int samples : {200, 20000}) {  // sample times cut the steps differently
+        INFO(samples << " samples");
+        const auto times = equally_spaced(scene->t_end(), samples);
+        const Trajectory odeint = integrate_scene(*scene, times, OdeMethod::fehlberg78);
+        const double e0 = scene->energy(scene->initial_state());
+        double worst = 0;
+        for (std::size_t k = 0; k < times.size(); ++k) {
+            const Bodies b = state_at(*scene, odeint, k);
+            worst = std::max(worst, std::abs(scene->energy(b) - e0) / std::abs(e0));
+        }
+        CHECK(worst < 1e-9);
+        // The fibre starts without rotation; the bounces give it a good share of the energy.
+        CHECK(rotational_energy(state_at(*scene, odeint, times.size() - 1)) > 0.1 * e0);
+    }
+}
+
+TEST_CASE("every registered scheme runs on every scene") {
+    for (const auto& scene_id : SceneRegistry::instance().ids()) {
+        const auto scene = make_scene(scene_id);
+        // A short run at the scene's coarsest default step; the fibre until after its first bounce.
+        const double dt = scene->default_dts().front();
+        const double t_end = scene_id == "fibre_bounce" ? 0.35 : std::min(scene->t_end(), 1000 * dt);
+        for (const auto& scheme_id : seed_schemes) {
+            INFO(scene_id << " / " << scheme_id);
+            const RunResult r = run_one({scene_id, scheme_id, dt, t_end}, {.measure_time = false});
+            CHECK(r.value("unstable") == 0);
+            CHECK(r.value("force_evals") == r.value("steps") + 1);
+            if (scene->has_reference()) CHECK(std::isfinite(r.value("omega_rms_x")));
+            if (scene->conserves_energy()) CHECK(r.value("energy_drift_max") < 0.5);
+        }
+    }
+}
+
+TEST_CASE("the Dzhanibekov flips are physics: no sound scheme is called unstable, and the flips happen") {
+    const auto scene = make_scene("dzhanibekov");
+    const ReferenceState start = scene->exact(0, 0.0);
+    double min_wb_y = 1e300;
+    for (int k = 0; k <= 400; ++k) min_wb_y = std::min(min_wb_y, to_body(scene->exact(0, 0.05 * k).q, scene->exact(0, 0.05 * k).omega).y());
+    CHECK(to_body(start.q, start.omega).y() > 1.9);
+    CHECK(min_wb_y < -1.9);  // w'2 reverses: the body has turned over
+    for (const auto& scheme_id : seed_schemes) {
+        INFO(scheme_id);
+        CHECK(run_one({"dzhanibekov", scheme_id, 1e-2, 0.0}, {.measure_time = false}).value("unstable") == 0);
+    }
+}
+
+TEST_CASE("impossible scene parameters are rejected, naming the key") {
+    auto message = [](const std::string& scene, ParamOverrides overrides) -> std::string {
+        try {
+            make_scene(scene, overrides);
+        } catch (const InputError& e) {
+            return e.what();
+        }
+        return "";
+    };
+    CHECK_THAT(message("dipole_top", {{"inertia", {-1, 1, 1}}}), Catch::Contains("dipole_top.inertia") && Catch::Contains("greater than 0"));
+    CHECK_THAT(message("dipole_top", {{"inertia", {1, 1, 3}}}), Catch::Contains("dipole_top.inertia") && Catch::Contains("triangle inequality"));
+    CHECK_THAT(message("fibre_bounce", {{"poisson", {0.7}}}), Catch::Contains("fibre_bounce.poisson"));
+    CHECK_THAT(message("torqued_cylinder", {{"radius", {0}}}), Catch::Contains("torqued_cylinder.radius"));
+    CHECK_THAT(message("cylinder_free", {{"q0", {0, 0, 0, 0}}}), Catch::Contains("cylinder_free.q0"));
+    CHECK_THAT(message("cylinder_free", {{"omega0", {1, 2}}}), Catch::Contains("expects 3 values"));
+    CHECK_THAT(message("cylinder_free", {{"spin", {1}}}), Catch::Contains("unknown parameter 'cylinder_free.spin'") && Catch::Contains("omega0"));
+    CHECK_THAT(message("dzhanibekov", {{"t_end", {0}}}), Catch::Contains("dzhanibekov.t_end"));
+    // HLW's moments break the triangle inequality; asymmetric_free keeps them on purpose.
+    CHECK(message("asymmetric_free", {}).empty());
+}
+
+TEST_CASE("scene parameters change the run") {
+    const RunResult base = run_one({"torqued_cylinder", "direct", 1e-2, 1.0}, {.measure_time = false});
+    const RunResult stronger =
+        run_one({"torqued_cylinder", "direct", 1e-2, 1.0, {{"torque", {0.05}}}}, {.measure_time = false});
+    CHECK(base.value("omega_rms_z") != stronger.value("omega_rms_z"));
+}
+
+TEST_CASE("reference trajectories are cached on disk, keyed by their inputs") {
+    const auto dir = std::filesystem::temp_directory_path() / ("rotbench_cache_test_" + std::to_string(::getpid()));
+    std::filesystem::remove_all(dir);
+    ::setenv("ROTBENCH_CACHE", dir.c_str(), 1);
+    Trajectory t;
+    t.bodies = 1;
+    t.values.assign(2 * Trajectory::width, 0.5);
+    store_cached("dipole_top", "key-a", t);
+    const auto hit = load_cached("dipole_top", "key-a");
+    REQUIRE(hit);
+    CHECK(hit->values == t.values);
+    CHECK_FALSE(load_cached("dipole_top", "key-b"));
+    ::setenv("ROTBENCH_CACHE", "off", 1);
+    CHECK_FALSE(load_cached("dipole_top", "key-a"));
+    ::unsetenv("ROTBENCH_CACHE");
+    std::filesystem::remove_all(dir);
+}
