@@ -49,6 +49,28 @@ const std::vector<std::string> seed_schemes = {"direct", "munjiza_rk4", "zvw", "
 
 double final_error(const RunResult& r) { return r.series.empty() ? NAN : std::abs(r.series.back().at(1)); }
 
+// How the largest energy error of each scheme falls with dt, between the coarsest and
+// the finest step of a scene: the slope of log error against log dt.
+std::string energy_slopes(const std::map<std::pair<std::string, double>, std::vector<const RunResult*>>& groups) {
+    std::map<std::string, std::map<std::string, std::vector<std::pair<double, double>>>> points;  // scene, scheme
+    for (const auto& [key, runs] : groups)
+        for (const RunResult* r : runs) points[key.first][r->spec.scheme].push_back({r->spec.dt, r->value("energy_drift_max")});
+    std::string md;
+    for (const auto& [scene, by_scheme] : points) {
+        std::string line;
+        for (const auto& [scheme, p] : by_scheme) {
+            const auto [lo, hi] = std::minmax_element(p.begin(), p.end());
+            if (p.size() < 2 || !(lo->second > 0.0) || !(hi->second > 0.0)) continue;
+            const double slope = std::log(hi->second / lo->second) / std::log(hi->first / lo->first);
+            line += fmt::format("{}{} {:.2f}", line.empty() ? "" : ", ", scheme, slope);
+        }
+        if (!line.empty())
+            md += fmt::format("Slope of log(largest energy error) against log(dt) on `{}`, from dt = {:g} to {:g}: {}.\n\n", scene,
+                              by_scheme.begin()->second.front().first, by_scheme.begin()->second.back().first, line);
+    }
+    return md;
+}
+
 }  // namespace
 
 std::string energy_series_section(const std::vector<RunResult>& results, const std::filesystem::path& dir) {
@@ -100,6 +122,7 @@ std::string energy_series_section(const std::vector<RunResult>& results, const s
         }
         md += "\n";
     }
+    md += energy_slopes(groups);
     return md;
 }
 

@@ -1,6 +1,7 @@
 #include "reports/markdown_report.hpp"
 
 #include "build_info.hpp"
+#include "references/odeint_reference.hpp"
 #include "reports/energy_series.hpp"
 #include "reports/seed_table1.hpp"
 
@@ -42,6 +43,20 @@ void scene_section(std::string& md, const std::string& scene_id, const std::vect
         if (r.spec.scene == scene_id) runs.push_back(&r);
     md += fmt::format("## Scene `{}`\n\n{}. Source: {}. Duration {} s.\n\n", scene_id, entry.summary, entry.source,
                       runs.front()->spec.t_end);
+    const auto scene = make_scene(scene_id, runs.front()->spec.params);
+    switch (scene->reference_kind()) {
+        case Scene::ReferenceKind::closed_form: md += "Reference: closed form.\n\n"; break;
+        case Scene::ReferenceKind::odeint:
+            md += fmt::format("Reference: Boost.Odeint (Fehlberg 7(8), tolerance {:g}), sampled at every step.\n\n",
+                              reference_tolerance);
+            break;
+        case Scene::ReferenceKind::none: md += "No step-by-step reference; the true motion conserves its energy.\n\n"; break;
+    }
+    if (!runs.front()->spec.params.empty()) {
+        md += "Parameters set:";
+        for (const auto& [key, values] : runs.front()->spec.params) md += fmt::format(" `{}` = {};", key, fmt::join(values, ", "));
+        md += "\n\n";
+    }
     if (!entry.notes.empty()) md += entry.notes + "\n\n";
 
     std::vector<std::string> columns;

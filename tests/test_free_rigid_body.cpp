@@ -122,3 +122,17 @@ TEST_CASE("cylinder_free's reference: w'x = sin 50t, w'y = cos 50t, w'z = 100 (s
         CHECK(w.z() == Approx(100.0).epsilon(1e-15));
     }
 }
+
+TEST_CASE("free rigid body: exactly on the separatrix (k^2 = 1, K infinite)") {
+    // I = (1, 5, 9), w = (3, 0.5, 1): G^2 - 2E I_b = 1(1-5)9 + 9(9-5)1 = 0 exactly in binary.
+    const Vec3 inertia(1, 5, 9), w0(3.0, 0.5, 1.0);
+    const FreeRigidBody exact(inertia, general_q0, w0);
+    CHECK(exact.complementary_parameter() == 0.0);
+    CHECK(std::isinf(exact.period()));
+    // The motion creeps towards the unstable axis; rounding in either solution grows like
+    // exp(lambda t) there (lambda = (G/I_b) sqrt((I_b-I_a)(I_s-I_b)/(I_a I_s)) = 2.6/s),
+    // so compare while that growth stays below ~3e4.
+    const Deviation d = against_odeint(inertia, general_q0, w0, 4.0);
+    CHECK(d.omega_relative < 1e-10);
+    CHECK(d.angle < 1e-10);
+}
