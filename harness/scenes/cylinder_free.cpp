@@ -5,9 +5,9 @@
 // for w'y; cos is what Euler's equations give for this start), and the closed-form
 // orientation of FreeRigidBody.
 #include "harness/scene.hpp"
+#include "harness/scenes/single_body.hpp"
 #include "references/free_rigid_body.hpp"
 
-#include <numbers>
 #include <optional>
 
 namespace rotbench {
@@ -25,23 +25,13 @@ public:
     }
 
     void prepare() override {
-        const double r = params.positive("radius"), h = params.positive("height");
-        mass_ = params.positive("density") * std::numbers::pi * r * r * h;
-        const double transverse = mass_ * (3.0 * r * r + h * h) / 12.0;
-        inertia_ = Vec3(transverse, transverse, 0.5 * mass_ * r * r);
+        cylinder_ = solid_cylinder(params);
         params.positive("t_end");
-        exact_.emplace(inertia_, params.quat("q0"), params.vec3("omega0"));
+        exact_.emplace(cylinder_.inertia, params.quat("q0"), params.vec3("omega0"));
     }
 
     Bodies initial_state() const override {
-        Bodies b;
-        b.resize(1);
-        b.mass[0] = mass_;
-        b.inertia.set(0, inertia_);
-        const Quat q0 = params.quat("q0");
-        b.orientation.set(0, q0);
-        b.omega.set(0, q0 * params.vec3("omega0"));
-        return b;
+        return single_body(cylinder_.mass, cylinder_.inertia, params.quat("q0"), params.vec3("omega0"));
     }
     std::vector<double> default_dts() const override { return {1e-2, 1e-3, 1e-4, 1e-5, 1e-6}; }  // Table 1
 
@@ -57,8 +47,7 @@ public:
     bool conserves_angular_momentum() const override { return true; }
 
 private:
-    double mass_ = 0;
-    Vec3 inertia_;
+    SolidCylinder cylinder_{};
     std::optional<FreeRigidBody> exact_;
 };
 

@@ -3,6 +3,7 @@
 // scheme's torque re-estimate. Energy 1/2 w'.I'w' - mu_world.B is conserved, and so is
 // the component of the angular momentum along B. Reference: Odeint.
 #include "harness/scene.hpp"
+#include "harness/scenes/single_body.hpp"
 #include "schemes/quaternion.hpp"
 
 #include <cmath>
@@ -30,13 +31,7 @@ public:
     }
 
     Bodies initial_state() const override {
-        Bodies b;
-        b.resize(1);
-        b.inertia.set(0, inertia_);
-        const Quat q0 = params.quat("q0");
-        b.orientation.set(0, q0);
-        b.omega.set(0, q0 * params.vec3("omega0"));
-        return b;
+        return single_body(1.0, inertia_, params.quat("q0"), params.vec3("omega0"));  // the mass plays no part
     }
     std::vector<double> default_dts() const override { return {1e-2, 1e-3, 1e-4}; }
 

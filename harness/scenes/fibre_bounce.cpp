@@ -7,6 +7,7 @@
 // horizontal in the vertical x-z plane. The true motion conserves the total energy
 // (translational + rotational + potential + elastic) exactly.
 #include "harness/scene.hpp"
+#include "harness/scenes/single_body.hpp"
 #include "schemes/quaternion.hpp"
 
 #include <array>
@@ -52,15 +53,8 @@ public:
     }
 
     Bodies initial_state() const override {
-        Bodies b;
-        b.resize(1);
-        b.mass[0] = mass_;
-        b.inertia.set(0, inertia_);
         const Quat q0(Eigen::AngleAxisd(params.number("tilt") * std::numbers::pi / 180.0, Vec3::UnitY()));
-        b.orientation.set(0, q0);
-        b.position.set(0, Vec3(0.0, 0.0, params.number("height")));
-        b.omega.set(0, q0 * params.vec3("omega0"));
-        return b;
+        return single_body(mass_, inertia_, q0, params.vec3("omega0"), Vec3(0.0, 0.0, params.number("height")));
     }
     std::vector<double> default_dts() const override { return {1e-5, 1e-6, 1e-7}; }  // seed Figs. 9-11: 1e-7, 1e-5
 

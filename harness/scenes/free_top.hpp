@@ -4,6 +4,7 @@
 #pragma once
 
 #include "harness/scene.hpp"
+#include "harness/scenes/single_body.hpp"
 #include "references/free_rigid_body.hpp"
 
 #include <optional>
@@ -12,15 +13,7 @@ namespace rotbench {
 
 class FreeTopScene : public Scene {
 public:
-    Bodies initial_state() const override {
-        Bodies b;
-        b.resize(1);
-        b.mass[0] = 1.0;
-        b.inertia.set(0, inertia_);
-        b.orientation.set(0, q0_);
-        b.omega.set(0, q0_ * omega0_body_);
-        return b;
-    }
+    Bodies initial_state() const override { return single_body(1.0, inertia_, q0_, omega0_body_); }
     void evaluate_forces(Bodies& b, double) const override {
         b.force.set(0, Vec3::Zero());
         b.torque.set(0, Vec3::Zero());

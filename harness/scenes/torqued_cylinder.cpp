@@ -4,9 +4,9 @@
 // -kappa Phi(t), kappa = (I_t - I_a)/I_t, Phi = int w'z dt = w'z0 t + tau t^2 / (2 I_a).
 // The orientation has no elementary closed form: it comes from Odeint.
 #include "harness/scene.hpp"
+#include "harness/scenes/single_body.hpp"
 #include "schemes/quaternion.hpp"
 
-#include <numbers>
 
 namespace rotbench {
 namespace {
@@ -24,23 +24,13 @@ public:
     }
 
     void prepare() override {
-        const double r = params.positive("radius"), h = params.positive("height");
-        mass_ = params.positive("density") * std::numbers::pi * r * r * h;
-        const double transverse = mass_ * (3.0 * r * r + h * h) / 12.0;
-        inertia_ = Vec3(transverse, transverse, 0.5 * mass_ * r * r);
+        cylinder_ = solid_cylinder(params);
         torque_ = params.number("torque");
         params.positive("t_end");
     }
 
     Bodies initial_state() const override {
-        Bodies b;
-        b.resize(1);
-        b.mass[0] = mass_;
-        b.inertia.set(0, inertia_);
-        const Quat q0 = params.quat("q0");
-        b.orientation.set(0, q0);
-        b.omega.set(0, q0 * params.vec3("omega0"));
-        return b;
+        return single_body(cylinder_.mass, cylinder_.inertia, params.quat("q0"), params.vec3("omega0"));
     }
     std::vector<double> default_dts() const override { return {1e-2, 1e-3, 1e-4}; }
 
@@ -53,15 +43,15 @@ public:
     bool conserves_energy() const override { return false; }  // the torque does work
     std::optional<Vec3> exact_omega_body(std::size_t, double t) const override {
         const Vec3 w0 = params.vec3("omega0");
-        const double it = inertia_.x(), ia = inertia_.z();
+        const double it = cylinder_.inertia.x(), ia = cylinder_.inertia.z();
         const double kappa = (it - ia) / it, phi = w0.z() * t + 0.5 * torque_ * t * t / ia;
         const double c = std::cos(kappa * phi), s = std::sin(kappa * phi);
         return Vec3(c * w0.x() + s * w0.y(), -s * w0.x() + c * w0.y(), w0.z() + torque_ / ia * t);
     }
 
 private:
-    double mass_ = 0, torque_ = 0;
-    Vec3 inertia_;
+    SolidCylinder cylinder_{};
+    double torque_ = 0;
 };
 
 const RegisterScene<TorquedCylinder> registration(
