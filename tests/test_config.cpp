@@ -50,7 +50,7 @@ TEST_CASE("config errors name the file, line and column, and the key") {
     CHECK_THAT(error_of("[dipole_top]\nmass = 3\n"), Catch::Contains("unknown parameter 'dipole_top.mass'"));
 }
 
-TEST_CASE("--set SCENE.KEY=VALUE") {
+TEST_CASE("the option --set SCENE.KEY=VALUE") {
     SweepSpec spec;
     add_setting(spec, "torqued_cylinder.omega0=1,-2.5,3");
     CHECK(spec.params.at("torqued_cylinder")[0].second == std::vector<double>{1, -2.5, 3});
