@@ -61,7 +61,7 @@ TEST_CASE("Table 1: every entry with dt = 1e-2 ... 1e-5 agrees within 1 %") {
     CHECK(checked == 24);
 }
 
-TEST_CASE("Table 1 at dt = 1e-6: direct agrees; the other two disagree for the reasons the report gives") {
+TEST_CASE("Table 1 at dt = 1e-6: direct agrees, the other two disagree for the reasons the report gives") {
     const auto rows = compare_table1(table1_runs());
     for (char c : {'x', 'y'}) {
         INFO("component " << c);
