@@ -45,7 +45,8 @@ public:
 
     bool operator()(std::int64_t n, double t, const Bodies& b) {
         const double energy = finite_state(b) ? scene_.energy(b) : nan;
-        if (!std::isfinite(energy) || std::abs(energy - energy0_) > blowup_energy_factor * energy_scale_) {
+        const bool runaway = scene_.conserves_energy() && std::abs(energy - energy0_) > blowup_energy_factor * energy_scale_;
+        if (!std::isfinite(energy) || runaway) {
             fail_step_ = n;
             fail_time_ = t;
             return false;
