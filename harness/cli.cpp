@@ -5,6 +5,7 @@
 #include "harness/parse.hpp"
 #include "harness/sweep.hpp"
 #include "reports/markdown_report.hpp"
+#include "reports/orders.hpp"
 #include "reports/output_files.hpp"
 #include "reports/results_csv.hpp"
 
@@ -82,6 +83,9 @@ int run(const RunOptionsText& o, const std::string& command_line, std::ostream& 
                            r.failure.empty() ? "ok" : "FAILED: " + r.failure);
     });
     write_file_atomically(dir / "results.csv", results_csv(results));
+    const auto orders = observed_orders(results);
+    write_file_atomically(dir / "orders.csv", orders_csv(orders));
+    write_file_atomically(dir / "local_orders.csv", local_orders_csv(orders));
     write_file_atomically(dir / "report.md", markdown_report(results, command_line, dir));
     out << fmt::format("wrote {} and {}\n", (dir / "results.csv").string(), (dir / "report.md").string());
     return 0;

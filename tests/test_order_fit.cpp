@@ -1,0 +1,100 @@
+#include "harness/order_fit.hpp"
+
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <random>
+
+using namespace rotbench;
+
+namespace {
+
+std::vector<OrderPoint> ladder(double dt0, int n, auto error_of) {
+    std::vector<OrderPoint> p;
+    for (int k = 0; k < n; ++k) {
+        const double dt = dt0 * std::pow(0.5, k);
+        p.push_back({dt, error_of(dt)});
+    }
+    return p;
+}
+
+}  // namespace
+
+TEST_CASE("order fit: an exact power law gives its order, with a zero-width interval") {
+    const OrderFit f = fit_order(ladder(0.1, 6, [](double dt) { return 3.0 * dt * dt; }));
+    REQUIRE(f.sufficient);
+    CHECK(f.order == Approx(2.0).epsilon(1e-12));
+    CHECK(f.order_lo == Approx(2.0).epsilon(1e-10));
+    CHECK(f.order_hi == Approx(2.0).epsilon(1e-10));
+    CHECK(f.points == 6);
+    CHECK(f.local_orders.size() == 5);
+}
+
+TEST_CASE("order fit: noise widens the interval, which still holds the true order") {
+    std::mt19937 rng(7);
+    std::normal_distribution<double> noise(0.0, 0.03);  // 3 % multiplicative noise
+    int covered = 0;
+    for (int trial = 0; trial < 200; ++trial) {
+        const OrderFit f = fit_order(ladder(0.1, 8, [&](double dt) { return dt * dt * dt * std::exp(noise(rng)); }));
+        REQUIRE(f.sufficient);
+        CHECK(f.order_hi > f.order_lo);
+        covered += f.order_lo <= 3.0 && 3.0 <= f.order_hi;
+    }
+    // A 95 % interval: 190 of 200 expected; below 180 has probability < 1e-3 (binomial).
+    CHECK(covered >= 180);
+}
+
+TEST_CASE("order fit: points at the round-off floor are left out") {
+    // Second order down to a plateau at 1e-11 (round-off of an O(1e5) quantity).
+    const auto points = ladder(1e-2, 12, [](double dt) { return std::max(dt * dt, 1e-11); });
+    const OrderFit f = fit_order(points);
+    REQUIRE(f.sufficient);
+    CHECK(f.order == Approx(2.0).margin(1e-9));
+    CHECK(f.dt_min > 2e-6);  // the plateau starts where dt^2 < 1e-11
+    SECTION("and so are those below the absolute floor") {
+        const OrderFit g = fit_order(ladder(1e-3, 8, [](double dt) { return dt * dt * dt * 1e-4; }));
+        CHECK(g.points < 8);
+    }
+}
+
+TEST_CASE("order fit: pre-asymptotic points are left out") {
+    // e = dt^2 (1 + 50 dt^2): far from order 2 at dt ~ 0.1, order 2 once 50 dt^2 << 1.
+    const OrderFit f = fit_order(ladder(0.4, 10, [](double dt) { return dt * dt * (1 + 50 * dt * dt); }));
+    REQUIRE(f.sufficient);
+    CHECK(f.order == Approx(2.0).margin(0.05));
+    CHECK(f.dt_max < 0.4);
+}
+
+TEST_CASE("order fit: fewer than 3 usable points is insufficient, not a number") {
+    CHECK_FALSE(fit_order(ladder(0.1, 2, [](double dt) { return dt; })).sufficient);
+    CHECK_FALSE(fit_order({{0.1, 1e-3}, {0.05, NAN}, {0.025, 1e-20}, {0.0125, 2e-4}}).sufficient);
+}
+
+#include "harness/run.hpp"
+#include "reports/expected_orders.hpp"
+#include "reports/orders.hpp"
+
+TEST_CASE("each seed scheme shows the order the theory gives it (reports/expected_orders.hpp)") {
+    struct Case {
+        std::string scene;
+        bool with_torque;
+        double dt0;
+    };
+    // Halving ladders of 5 steps from dt0, inside each scene's asymptotic range.
+    for (const Case& c : {Case{"cylinder_free", false, 2e-4}, Case{"asymmetric_free", false, 1e-2},
+                          Case{"dipole_top", true, 1e-2}}) {
+        for (const auto& expected : expected_orders()) {
+            if (expected.with_torque != c.with_torque) continue;
+            std::vector<RunResult> runs;
+            for (int k = 0; k < 5; ++k)
+                runs.push_back(run_one({c.scene, expected.scheme, c.dt0 * std::pow(0.5, k), 0.0}, {.measure_time = false}));
+            for (const auto& row : observed_orders(runs)) {
+                if (row.metric != "omega_err_max") continue;
+                INFO(c.scene << " / " << expected.scheme << ": observed " << row.fit.order << " [" << row.fit.order_lo
+                             << ", " << row.fit.order_hi << "], expected " << expected.order);
+                REQUIRE(row.fit.sufficient);
+                // 0.1: what is left of the pre-asymptotic terms on these ladders.
+                CHECK(row.fit.order == Approx(expected.order).margin(0.1));
+            }
+        }
+    }
+}
