@@ -51,7 +51,10 @@ public:
             fail_time_ = t;
             return false;
         }
-        if (energy0_ != 0.0 && scene_.conserves_energy()) energy_drift_ = std::max(energy_drift_, std::abs(energy - energy0_) / std::abs(energy0_));
+        if (energy0_ != 0.0 && scene_.conserves_energy()) {
+            energy_drift_ = std::max(energy_drift_, std::abs(energy - energy0_) / std::abs(energy0_));
+            envelope_fit_.add(t, energy_drift_);
+        }
         if (series_stride_ > 0 && n % series_stride_ == 0) record(t, b);
         if (scene_.conserves_angular_momentum() && momentum0_.norm() > 0.0)
             momentum_drift_ = std::max(momentum_drift_, (total_angular_momentum(b) - momentum0_).norm() / momentum0_.norm());
@@ -82,7 +85,10 @@ public:
             add("omega_err_max", omega_err_max_);
             add("orientation_err_max", orientation_err_max_);
         }
-        if (energy0_ != 0.0 && scene_.conserves_energy()) add("energy_drift_max", energy_drift_);
+        if (energy0_ != 0.0 && scene_.conserves_energy()) {
+            add("energy_drift_max", energy_drift_);
+            add("energy_drift_rate", envelope_fit_.slope());
+        }
         if (scene_.conserves_angular_momentum()) add("momentum_drift_max", momentum_drift_);
         add("quat_norm_err_max", quat_norm_err_);
         if (unstable()) {
@@ -104,6 +110,13 @@ private:
     const Scene& scene_;
     const Reference* reference_;
     std::int64_t series_stride_;
+    // Least-squares line through the envelope max_{s<=t} |E(s) - E0|/|E0|: its slope is
+    // the secular drift rate (per second), apart from the bounded oscillation.
+    struct LineFit {
+        double n = 0, st = 0, sy = 0, stt = 0, sty = 0;
+        void add(double t, double y) { n += 1; st += t; sy += y; stt += t * t; sty += t * y; }
+        double slope() const { return n < 2 ? 0.0 : (n * sty - st * sy) / (n * stt - st * st); }
+    } envelope_fit_;
     std::vector<std::string> series_columns_;
     std::vector<std::vector<double>> series_;
     double energy0_, energy_scale_;
@@ -167,7 +180,7 @@ RunResult run_one(const RunSpec& requested, const RunOptions& options) {
         unstable = true;
     }
 
-    double cpu = nan;
+    CpuTiming cpu{nan, nan, nan, 0};
     if (!unstable && options.measure_time) {
         // Timing run: the same loop without the observer, so the reference solution and
         // the metrics are not charged to the scheme.
@@ -180,8 +193,11 @@ RunResult run_one(const RunSpec& requested, const RunOptions& options) {
     }
     result.metrics.emplace_back("steps", static_cast<double>(done));
     result.metrics.emplace_back("force_evals", static_cast<double>(force_evals));
-    result.metrics.emplace_back("cpu_seconds", cpu);
-    result.metrics.emplace_back("ns_per_step", cpu / static_cast<double>(steps) * 1e9);
+    result.metrics.emplace_back("cpu_seconds", cpu.median);
+    result.metrics.emplace_back("cpu_seconds_min", cpu.min);
+    result.metrics.emplace_back("cpu_seconds_max", cpu.max);
+    result.metrics.emplace_back("timing_repeats", cpu.repeats);
+    result.metrics.emplace_back("ns_per_step", cpu.median / static_cast<double>(steps) * 1e9);
     result.metrics.emplace_back("unstable", unstable ? 1.0 : 0.0);
     return result;
 }

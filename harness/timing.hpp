@@ -13,16 +13,21 @@ inline double thread_cpu_seconds() {
     return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
 }
 
+struct CpuTiming {
+    double median = 0, min = 0, max = 0;
+    int repeats = 0;
+};
+
 // Median CPU time of `work` after one discarded warm-up call; repeats at least
 // `min_repeats` times and until `min_total` seconds were measured (at most 31 repeats).
 // A call that takes longer than `long_call` seconds is its own warm-up and sample: its
 // start-up costs are amortised, and repeating it would only spend time.
 template <class Work>
-double median_cpu_seconds(Work&& work, int min_repeats = 3, double min_total = 0.05, double long_call = 0.5) {
+CpuTiming median_cpu_seconds(Work&& work, int min_repeats = 3, double min_total = 0.05, double long_call = 0.5) {
     const double first_start = thread_cpu_seconds();
     work();
     const double first = thread_cpu_seconds() - first_start;
-    if (first > long_call) return first;
+    if (first > long_call) return {first, first, first, 1};
     std::vector<double> samples;
     double total = 0.0;
     while (samples.size() < 31 && (samples.size() < static_cast<std::size_t>(min_repeats) || total < min_total)) {
@@ -31,8 +36,8 @@ double median_cpu_seconds(Work&& work, int min_repeats = 3, double min_total = 0
         samples.push_back(thread_cpu_seconds() - start);
         total += samples.back();
     }
-    std::nth_element(samples.begin(), samples.begin() + samples.size() / 2, samples.end());
-    return samples[samples.size() / 2];
+    std::sort(samples.begin(), samples.end());
+    return {samples[samples.size() / 2], samples.front(), samples.back(), static_cast<int>(samples.size())};
 }
 
 }  // namespace rotbench

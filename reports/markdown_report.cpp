@@ -147,7 +147,8 @@ std::string markdown_report(const std::vector<RunResult>& results, const std::st
           "(each solution in its own body frame), the seed's Table 1 quantity.\n"
           "- `omega_err_max`: max |w - w_ref| in the world frame. `orientation_err_max`: max rotation angle "
           "between q and q_ref.\n"
-          "- `energy_drift_max`: max |E - E0|/|E0|. `momentum_drift_max`: max |L - L0|/|L0| (torque-free scenes). "
+          "- `energy_drift_max`: max |E - E0|/|E0|; `energy_drift_rate`: slope (1/s) of the least-squares line "
+          "through its running maximum, the secular drift. `momentum_drift_max`: max |L - L0|/|L0| (torque-free scenes). "
           "`quat_norm_err_max`: max ||q| - 1| (no scheme renormalises q).\n"
           "- `unstable`: 1 when the state became NaN/Inf, the energy error passed 1e6 times the initial energy, "
           "or the scheme threw; the run stops there and its error metrics are NaN.\n";
