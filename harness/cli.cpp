@@ -11,6 +11,7 @@
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <thread>
 #include <filesystem>
 #include <fmt/format.h>
 
@@ -21,7 +22,8 @@ struct RunOptionsText {
     std::string scenes, schemes, dts, t_end, config, out = "rotbench-out";
     std::vector<std::string> settings;
     int energy_series = 400;
-    bool overwrite = false;
+    int jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    bool overwrite = false, quick = false;
 };
 
 // The sweep the options describe: the config file first, the command line over it.
@@ -32,6 +34,7 @@ SweepSpec sweep_spec(const RunOptionsText& o) {
     if (!o.dts.empty()) spec.dts = parse_positive_list(o.dts, "--dt");
     if (!o.t_end.empty()) spec.t_end = parse_positive(o.t_end, "--t-end");
     for (const auto& s : o.settings) add_setting(spec, s);
+    spec.quick = o.quick;
     return spec;
 }
 
@@ -78,10 +81,13 @@ int run(const RunOptionsText& o, const std::string& command_line, std::ostream& 
 
     RunOptions options;
     options.series_samples = o.energy_series;
-    const auto results = run_sweep(plan, options, [&](const RunResult& r) {
-        out << fmt::format("{:<16} {:<16} dt={:<8g} {}\n", r.spec.scene, r.spec.scheme, r.spec.dt,
-                           r.failure.empty() ? "ok" : "FAILED: " + r.failure);
-    });
+    const auto results = run_sweep(
+        plan, options,
+        [&](const RunResult& r) {
+            out << fmt::format("{:<16} {:<16} dt={:<10g} {}\n", r.spec.scene, r.spec.scheme, r.spec.dt,
+                               r.failure.empty() ? "ok" : "FAILED: " + r.failure);
+        },
+        o.jobs);
     write_file_atomically(dir / "results.csv", results_csv(results));
     const auto orders = observed_orders(results);
     write_file_atomically(dir / "orders.csv", orders_csv(orders));
@@ -134,6 +140,10 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
     run_cmd->add_flag("--overwrite", o.overwrite, "replace results already in --out");
     run_cmd->add_option("--set", o.settings, "scene parameter, SCENE.KEY=VALUE (repeatable; VALUE may be a comma list)");
     run_cmd->add_option("--config", o.config, "TOML file with [run] selections and [SCENE] parameters");
+    run_cmd->add_flag("--quick", o.quick, "each scene's short ladder of time steps (for CI)");
+    run_cmd->add_option("--jobs", o.jobs, "runs in parallel (results do not depend on it)")
+        ->capture_default_str()
+        ->check(CLI::PositiveNumber);
     run_cmd->add_option("--energy-series", o.energy_series, "energy samples per run in scenes that plot it (0: none)")
         ->capture_default_str()
         ->check(CLI::NonNegativeNumber);

@@ -2,6 +2,9 @@
 
 #include "schemes/quaternion.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <functional>
 #include <stdexcept>
 
 namespace rotbench {
@@ -21,6 +24,15 @@ double Scene::energy(const Bodies& bodies) const { return kinetic_energy(bodies)
 
 std::vector<std::pair<std::string, double>> Scene::energy_parts(const Bodies& bodies) const {
     return {{"translational", translational_energy(bodies)}, {"rotational", rotational_energy(bodies)}};
+}
+
+std::vector<double> halving_ladder(double dt_max, int rungs, std::vector<double> extra) {
+    std::vector<double> dts;
+    for (int k = 0; k < rungs; ++k) dts.push_back(std::ldexp(dt_max, -k));  // exact halvings
+    for (double dt : extra)
+        if (std::find(dts.begin(), dts.end(), dt) == dts.end()) dts.push_back(dt);
+    std::sort(dts.begin(), dts.end(), std::greater<>());
+    return dts;
 }
 
 double translational_energy(const Bodies& b) {

@@ -31,7 +31,10 @@ public:
 
     virtual Bodies initial_state() const = 0;
     double t_end() const { return params.number("t_end"); }
+    // The default suite's time steps (a ladder by halving, plus any published ones) and
+    // the quick suite's (a few coarse rungs, for CI).
     virtual std::vector<double> default_dts() const = 0;
+    virtual std::vector<double> quick_dts() const = 0;
 
     // The one force/torque evaluation of a step: fills bodies.force and bodies.torque
     // (world frame) from the current positions, orientations and velocities.
@@ -78,6 +81,9 @@ struct RegisterScene {
 
 // The scene `id` with its parameters overridden and validated (InputError on bad input).
 std::unique_ptr<Scene> make_scene(const std::string& id, const ParamOverrides& overrides = {});
+
+// dt_max, dt_max/2, ..., rungs values in all, then `extra` (published steps) not already in.
+std::vector<double> halving_ladder(double dt_max, int rungs, std::vector<double> extra = {});
 
 double kinetic_energy(const Bodies& bodies);
 double translational_energy(const Bodies& bodies);

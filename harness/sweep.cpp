@@ -1,6 +1,10 @@
 #include "harness/sweep.hpp"
 
 #include <algorithm>
+#include <atomic>
+#include <exception>
+#include <mutex>
+#include <thread>
 
 namespace rotbench {
 
@@ -24,7 +28,7 @@ std::vector<RunSpec> plan_sweep(const SweepSpec& spec) {
         if (spec.t_end > 0.0) with_t_end.push_back({"t_end", {spec.t_end}});
         const auto scene = make_scene(scene_id, with_t_end);  // validates every override
         const double t_end = scene->t_end();
-        const auto dts = spec.dts.empty() ? scene->default_dts() : spec.dts;
+        const auto dts = !spec.dts.empty() ? spec.dts : spec.quick ? scene->quick_dts() : scene->default_dts();
         for (double dt : dts) step_count(t_end, dt);  // validates dt against t_end
         for (const auto& scheme_id : scheme_ids)
             for (double dt : dts) plan.push_back({scene_id, scheme_id, dt, t_end, overrides});
@@ -33,13 +37,29 @@ std::vector<RunSpec> plan_sweep(const SweepSpec& spec) {
 }
 
 std::vector<RunResult> run_sweep(const std::vector<RunSpec>& plan, const RunOptions& options,
-                                 const std::function<void(const RunResult&)>& on_done) {
-    std::vector<RunResult> results;
-    results.reserve(plan.size());
-    for (const auto& spec : plan) {
-        results.push_back(run_one(spec, options));
-        if (on_done) on_done(results.back());
-    }
+                                 const std::function<void(const RunResult&)>& on_done, int jobs) {
+    std::vector<RunResult> results(plan.size());
+    std::atomic<std::size_t> next{0};
+    std::mutex done_mutex;
+    std::exception_ptr error;  // an InputError found while running (none expected after plan_sweep)
+    auto worker = [&] {
+        for (std::size_t i = next++; i < plan.size(); i = next++) {
+            try {
+                results[i] = run_one(plan[i], options);
+            } catch (...) {
+                std::lock_guard lock(done_mutex);
+                if (!error) error = std::current_exception();
+                continue;
+            }
+            std::lock_guard lock(done_mutex);
+            if (on_done) on_done(results[i]);
+        }
+    };
+    std::vector<std::thread> threads;
+    for (int j = 1; j < std::max(1, jobs); ++j) threads.emplace_back(worker);
+    worker();
+    for (auto& t : threads) t.join();
+    if (error) std::rethrow_exception(error);
     return results;
 }
 

@@ -15,6 +15,7 @@ struct SweepSpec {
     std::vector<std::string> schemes;  // empty: every registered scheme
     std::vector<double> dts;           // empty: each scene's default ladder
     double t_end = 0.0;                // 0: each scene's default
+    bool quick = false;                // each scene's quick ladder instead of its default one
     std::map<std::string, ParamOverrides> params;  // scene id -> overrides (--set, config)
 };
 
@@ -22,9 +23,11 @@ struct SweepSpec {
 // first, so a bad one is reported before anything runs (InputError).
 std::vector<RunSpec> plan_sweep(const SweepSpec& spec);
 
-// Runs the plan; a failing run is recorded and the sweep goes on. `on_done` is called
-// after each run (progress, incremental output).
+// Runs the plan on `jobs` threads; a failing run is recorded and the sweep goes on. The
+// results come back in plan order whatever `jobs` is, and are the same bit for bit apart
+// from the timing metrics. `on_done` is called after each run, one call at a time, in the
+// order the runs finish.
 std::vector<RunResult> run_sweep(const std::vector<RunSpec>& plan, const RunOptions& options = {},
-                                 const std::function<void(const RunResult&)>& on_done = {});
+                                 const std::function<void(const RunResult&)>& on_done = {}, int jobs = 1);
 
 }  // namespace rotbench

@@ -18,6 +18,10 @@ namespace {
 Quat about_x(double angle) { return Quat(std::cos(0.5 * angle), std::sin(0.5 * angle), 0.0, 0.0); }
 Quat about_z(double angle) { return Quat(std::cos(0.5 * angle), 0.0, 0.0, std::sin(0.5 * angle)); }
 
+// GSL's default error handler aborts the process, even from the _e functions; their
+// status codes are checked here instead.
+const bool gsl_handler_off = (gsl_set_error_handler_off(), true);
+
 double carlson_rf(double x, double y, double z) {
     gsl_sf_result r;
     if (gsl_sf_ellint_RF_e(x, y, z, GSL_PREC_DOUBLE, &r) != GSL_SUCCESS) throw std::domain_error("R_F");

@@ -2,6 +2,7 @@
 
 #include "harness/registry.hpp"
 
+#include <atomic>
 #include <cmath>
 #include <fmt/format.h>
 #include <fstream>
@@ -10,9 +11,11 @@
 namespace rotbench {
 
 void write_file_atomically(const std::filesystem::path& path, const std::string& content) {
-    // The temporary name carries the process id: two processes writing the same file
-    // (a shared cache) each rename a complete file.
-    const auto temporary = path.parent_path() / fmt::format(".{}.{}.tmp", path.filename().string(), ::getpid());
+    // The temporary name is unique to the process and the call: two processes or threads
+    // writing the same file (a shared cache) each rename a complete file.
+    static std::atomic<unsigned long> serial{0};
+    const auto temporary =
+        path.parent_path() / fmt::format(".{}.{}.{}.tmp", path.filename().string(), ::getpid(), serial++);
     {
         std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
         out << content;

@@ -3,6 +3,7 @@
 
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <stdexcept>
 
@@ -120,4 +121,25 @@ TEST_CASE("bad sweep inputs are rejected before anything runs, naming the valid 
                                  Catch::Contains("zvw_corrected"));
     }
     CHECK_THROWS_AS(plan_sweep({{"cylinder_free"}, {"direct"}, {1e-3}, 1e-4}), InputError);
+}
+
+TEST_CASE("--jobs does not change the results: bit-identical apart from the timing metrics") {
+    SweepSpec spec;
+    spec.scenes = {"asymmetric_free", "dipole_top"};
+    spec.quick = true;
+    const auto plan = plan_sweep(spec);
+    const auto serial = run_sweep(plan, {.measure_time = false}, {}, 1);
+    const auto parallel = run_sweep(plan, {.measure_time = false}, {}, 3);
+    REQUIRE(serial.size() == parallel.size());
+    for (std::size_t i = 0; i < serial.size(); ++i) {
+        INFO(serial[i].spec.scene << " " << serial[i].spec.scheme << " " << serial[i].spec.dt);
+        CHECK(parallel[i].spec.scheme == serial[i].spec.scheme);
+        REQUIRE(parallel[i].metrics.size() == serial[i].metrics.size());
+        for (std::size_t m = 0; m < serial[i].metrics.size(); ++m) {
+            const auto& [name, value] = serial[i].metrics[m];
+            if (name.rfind("cpu_seconds", 0) == 0 || name == "ns_per_step" || name == "timing_repeats") continue;
+            CHECK(parallel[i].metrics[m].first == name);
+            CHECK(std::memcmp(&parallel[i].metrics[m].second, &value, sizeof value) == 0);  // bit for bit (NaN too)
+        }
+    }
 }

@@ -25,7 +25,8 @@ public:
         const Vec3 inertia = params.principal_moments("inertia", /*real_body=*/false);
         set_motion(inertia, params.quat("q0"), params.vec3("momentum0").cwiseQuotient(inertia));
     }
-    std::vector<double> default_dts() const override { return {1e-1, 1e-2, 1e-3}; }
+    std::vector<double> default_dts() const override { return halving_ladder(1e-1, 8); }
+    std::vector<double> quick_dts() const override { return halving_ladder(1e-1, 4); }
 };
 
 const RegisterScene<AsymmetricFree> registration(

@@ -33,7 +33,8 @@ public:
     Bodies initial_state() const override {
         return single_body(1.0, inertia_, params.quat("q0"), params.vec3("omega0"));  // the mass plays no part
     }
-    std::vector<double> default_dts() const override { return {1e-2, 1e-3, 1e-4}; }
+    std::vector<double> default_dts() const override { return halving_ladder(1e-2, 7); }
+    std::vector<double> quick_dts() const override { return halving_ladder(1e-2, 4); }
 
     void evaluate_forces(Bodies& b, double) const override {
         b.force.set(0, Vec3::Zero());

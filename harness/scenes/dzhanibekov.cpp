@@ -18,7 +18,8 @@ public:
     void prepare() override {
         set_motion(params.principal_moments("inertia"), params.quat("q0"), params.vec3("omega0"));
     }
-    std::vector<double> default_dts() const override { return {1e-1, 1e-2, 1e-3}; }
+    std::vector<double> default_dts() const override { return halving_ladder(1e-1, 8); }
+    std::vector<double> quick_dts() const override { return halving_ladder(1e-1, 4); }
 };
 
 const RegisterScene<Dzhanibekov> registration(

@@ -32,7 +32,8 @@ public:
     Bodies initial_state() const override {
         return single_body(cylinder_.mass, cylinder_.inertia, params.quat("q0"), params.vec3("omega0"));
     }
-    std::vector<double> default_dts() const override { return {1e-2, 1e-3, 1e-4}; }
+    std::vector<double> default_dts() const override { return halving_ladder(1e-2, 7); }
+    std::vector<double> quick_dts() const override { return halving_ladder(1e-2, 4); }
 
     void evaluate_forces(Bodies& b, double) const override {
         b.force.set(0, Vec3::Zero());
