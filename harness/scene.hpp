@@ -64,6 +64,9 @@ public:
     // Scenes whose report shows the energy against time (the seed's Figures 8-11).
     virtual bool reports_energy_series() const { return false; }
     virtual bool conserves_angular_momentum() const { return false; }
+    // The torque seen in the body frame changes with the orientation (dipole_top): the
+    // class of scenes where reports/expected_orders.hpp's "with torque" orders apply.
+    virtual bool torque_depends_on_orientation() const { return false; }
 };
 
 using SceneRegistry = Registry<Scene>;

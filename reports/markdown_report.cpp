@@ -2,7 +2,10 @@
 
 #include "build_info.hpp"
 #include "references/odeint_reference.hpp"
+#include "reports/convergence_plots.hpp"
 #include "reports/energy_series.hpp"
+#include "reports/expected_orders.hpp"
+#include "reports/orders.hpp"
 #include "reports/seed_table1.hpp"
 
 #include <algorithm>
@@ -11,6 +14,8 @@
 #include <fmt/chrono.h>
 #include <fmt/format.h>
 #include <fmt/ranges.h>
+#include <fstream>
+#include <map>
 #include <set>
 
 namespace rotbench {
@@ -18,14 +23,14 @@ namespace {
 
 // Columns of the per-scene tables, in this order, when any run of the scene has them.
 const std::vector<std::string> table_metrics = {
-    "omega_rms_x",       "omega_rms_y",        "omega_rms_z",       "omega_err_max", "orientation_err_max",
-    "energy_drift_max",  "momentum_drift_max", "quat_norm_err_max", "steps",         "force_evals",
-    "ns_per_step",       "unstable"};
+    "omega_rms_x",       "omega_rms_y",        "omega_rms_z",       "omega_err_max",  "orientation_err_max",
+    "energy_drift_max",  "energy_drift_rate",  "momentum_drift_max", "quat_norm_err_max", "steps",
+    "force_evals",       "ns_per_step",        "unstable"};
 
 std::string cell(const std::string& metric, double v) {
     if (std::isnan(v)) return "—";
-    if (metric == "steps" || metric == "force_evals" || metric == "unstable") return fmt::format("{:.0f}", v);
-    if (metric == "ns_per_step") return fmt::format("{:.0f}", v);
+    if (metric == "steps" || metric == "force_evals" || metric == "unstable" || metric == "ns_per_step")
+        return fmt::format("{:.0f}", v);
     return fmt::format("{:.3e}", v);
 }
 
@@ -36,7 +41,96 @@ std::vector<std::string> unique_in_order(const std::vector<RunResult>& results, 
     return out;
 }
 
-void scene_section(std::string& md, const std::string& scene_id, const std::vector<RunResult>& results) {
+std::string cpu_model() {
+    std::ifstream in("/proc/cpuinfo");
+    for (std::string line; std::getline(in, line);)
+        if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
+    return "unknown CPU";
+}
+
+const OrderRow* find_order(const std::vector<OrderRow>& orders, const std::string& scene, const std::string& scheme,
+                           const std::string& metric) {
+    for (const auto& o : orders)
+        if (o.scene == scene && o.scheme == scheme && o.metric == metric) return &o;
+    return nullptr;
+}
+
+std::string order_cell(const OrderRow* o) {
+    if (!o) return "—";
+    if (!o->fit.sufficient) return "insufficient";
+    return fmt::format("{:.2f} [{:.2f}, {:.2f}]", o->fit.order, o->fit.order_lo, o->fit.order_hi);
+}
+
+// The value of `metric` at the finest dt that every scheme ran without failing on `scene`.
+std::pair<double, std::map<std::string, double>> at_common_dt(const std::vector<RunResult>& results,
+                                                               const std::string& scene, const std::string& metric) {
+    std::map<double, std::map<std::string, double>> by_dt;
+    std::set<std::string> schemes;
+    for (const auto& r : results)
+        if (r.spec.scene == scene) {
+            schemes.insert(r.spec.scheme);
+            if (std::isfinite(r.value(metric))) by_dt[r.spec.dt][r.spec.scheme] = r.value(metric);
+        }
+    for (auto it = by_dt.begin(); it != by_dt.end(); ++it)  // finest first
+        if (it->second.size() == schemes.size()) return {it->first, it->second};
+    return {NAN, {}};
+}
+
+// Cost per step relative to `direct`: the geometric mean over every (scene, dt) both ran.
+std::map<std::string, double> relative_cost(const std::vector<RunResult>& results) {
+    std::map<std::tuple<std::string, double>, double> direct;
+    for (const auto& r : results)
+        if (r.spec.scheme == "direct" && std::isfinite(r.value("ns_per_step"))) direct[{r.spec.scene, r.spec.dt}] = r.value("ns_per_step");
+    std::map<std::string, std::pair<double, int>> sums;
+    for (const auto& r : results) {
+        const auto it = direct.find({r.spec.scene, r.spec.dt});
+        if (it == direct.end() || !std::isfinite(r.value("ns_per_step"))) continue;
+        sums[r.spec.scheme].first += std::log(r.value("ns_per_step") / it->second);
+        sums[r.spec.scheme].second += 1;
+    }
+    std::map<std::string, double> out;
+    for (const auto& [scheme, s] : sums) out[scheme] = std::exp(s.first / s.second);
+    return out;
+}
+
+void summary_section(std::string& md, const std::vector<RunResult>& results, const std::vector<OrderRow>& orders) {
+    const auto scenes = unique_in_order(results, &RunSpec::scene);
+    std::vector<std::string> order_scenes;  // scenes with a reference: orders of omega_err_max
+    for (const auto& s : scenes)
+        if (std::any_of(results.begin(), results.end(), [&](const RunResult& r) { return r.spec.scene == s && r.has("omega_err_max"); }))
+            order_scenes.push_back(s);
+    const std::string error_scene = std::find(scenes.begin(), scenes.end(), "asymmetric_free") != scenes.end()
+                                        ? "asymmetric_free" : (order_scenes.empty() ? "" : order_scenes.front());
+    const std::string energy_scene = std::find(scenes.begin(), scenes.end(), "fibre_bounce") != scenes.end()
+                                         ? "fibre_bounce" : (scenes.empty() ? "" : scenes.front());
+    const auto [error_dt, errors] = error_scene.empty() ? std::pair<double, std::map<std::string, double>>{NAN, {}}
+                                                        : at_common_dt(results, error_scene, "omega_err_max");
+    const auto [energy_dt, drifts] = at_common_dt(results, energy_scene, "energy_drift_max");
+    const auto cost = relative_cost(results);
+
+    md += "## Summary\n\nObserved order of the angular-velocity error (`omega_err_max`) per scene, with its 95 % "
+          "interval; the error and the energy drift at one step size common to all schemes; cost per step "
+          "relative to `direct` (geometric mean over every scene and step both ran).\n\n| scheme |";
+    for (const auto& s : order_scenes) md += fmt::format(" order, {} |", s);
+    md += fmt::format(" omega_err_max, {} dt = {:g} | energy_drift_max, {} dt = {:g} | cost / direct |\n|---|", error_scene,
+                      error_dt, energy_scene, energy_dt);
+    for (std::size_t i = 0; i < order_scenes.size() + 3; ++i) md += "---:|";
+    md += "\n";
+    for (const auto& scheme : unique_in_order(results, &RunSpec::scheme)) {
+        md += "| " + scheme + " |";
+        for (const auto& s : order_scenes) md += " " + order_cell(find_order(orders, s, scheme, "omega_err_max")) + " |";
+        auto get = [](const std::map<std::string, double>& m, const std::string& k) {
+            const auto it = m.find(k);
+            return it == m.end() ? std::string("—") : fmt::format("{:.2e}", it->second);
+        };
+        md += fmt::format(" {} | {} | {} |\n", get(errors, scheme), get(drifts, scheme),
+                          cost.count(scheme) ? fmt::format("{:.2f}", cost.at(scheme)) : "—");
+    }
+    md += "\n";
+}
+
+void scene_section(std::string& md, const std::string& scene_id, const std::vector<RunResult>& results,
+                   const std::vector<OrderRow>& orders, const std::filesystem::path& dir) {
     const auto& entry = SceneRegistry::instance().at(scene_id, "scene");
     std::vector<const RunResult*> runs;
     for (const auto& r : results)
@@ -58,11 +152,37 @@ void scene_section(std::string& md, const std::string& scene_id, const std::vect
         md += "\n\n";
     }
     if (!entry.notes.empty()) md += entry.notes + "\n\n";
+    md += convergence_plots(scene_id, runs, dir);
+
+    // Observed orders of each fitted metric, with the expected one where theory gives it.
+    // Expected orders are known for torque-free scenes and orientation-dependent torques; a
+    // torque fixed in the body (torqued_cylinder) is a third case, left without a claim.
+    const bool expectation = scene->has_reference() && (scene->conserves_angular_momentum() || scene->torque_depends_on_orientation());
+    const bool torque = scene->torque_depends_on_orientation();
+    std::vector<std::string> metrics;
+    for (const auto& m : order_metrics)
+        if (std::any_of(runs.begin(), runs.end(), [&](const RunResult* r) { return r->has(m); })) metrics.push_back(m);
+    md += "| scheme | expected |";
+    for (const auto& m : metrics) md += " order of " + m + " |";
+    md += "\n|---|---:|";
+    for (std::size_t i = 0; i < metrics.size(); ++i) md += "---:|";
+    md += "\n";
+    for (const auto& scheme : unique_in_order(results, &RunSpec::scheme)) {
+        if (std::none_of(runs.begin(), runs.end(), [&](const RunResult* r) { return r->spec.scheme == scheme; })) continue;
+        std::string expected = "—";
+        if (expectation)
+            for (const auto& e : expected_orders())
+                if (e.scheme == scheme && e.with_torque == torque) expected = std::to_string(e.order);
+        md += fmt::format("| {} | {} |", scheme, expected);
+        for (const auto& m : metrics) md += " " + order_cell(find_order(orders, scene_id, scheme, m)) + " |";
+        md += "\n";
+    }
+    md += "\n";
 
     std::vector<std::string> columns;
     for (const auto& m : table_metrics)
         if (std::any_of(runs.begin(), runs.end(), [&](const RunResult* r) { return r->has(m); })) columns.push_back(m);
-    md += "| scheme | dt (s) |";
+    md += "<details><summary>Every run</summary>\n\n| scheme | dt (s) |";
     for (const auto& c : columns) md += " " + c + " |";
     md += "\n|---|---:|";
     for (std::size_t i = 0; i < columns.size(); ++i) md += "---:|";
@@ -72,7 +192,7 @@ void scene_section(std::string& md, const std::string& scene_id, const std::vect
         for (const auto& c : columns) md += " " + cell(c, r->value(c)) + " |";
         md += "\n";
     }
-    md += "\n";
+    md += "\n</details>\n\n";
     for (const RunResult* r : runs)
         if (!r->failure.empty())
             md += fmt::format("- **{} at dt = {:g} failed**: {}.\n", r->spec.scheme, r->spec.dt, r->failure);
@@ -114,11 +234,14 @@ void table1_section(std::string& md, const std::vector<RunResult>& results) {
 }
 
 void schemes_section(std::string& md, const std::vector<RunResult>& results) {
-    md += "## Schemes and the readings of the seed's equations\n\n";
+    md += "## Schemes, the readings of the seed's equations, and their expected orders\n\n";
     for (const auto& id : unique_in_order(results, &RunSpec::scheme)) {
         const auto& s = SchemeRegistry::instance().at(id, "scheme");
         md += fmt::format("- **`{}`**: {}. Source: {}.", id, s.summary, s.source);
         if (!s.notes.empty()) md += " Reading: " + s.notes;
+        for (const auto& e : expected_orders())
+            if (e.scheme == id)
+                md += fmt::format(" Expected order {} {}: {}.", e.order, e.with_torque ? "with torque" : "without torque", e.reason);
         md += "\n";
     }
     md += "\n";
@@ -129,29 +252,40 @@ void schemes_section(std::string& md, const std::vector<RunResult>& results) {
 std::string markdown_report(const std::vector<RunResult>& results, const std::string& command_line,
                             const std::filesystem::path& dir) {
     std::string md = "# rotbench report\n\n";
-    md += fmt::format("rotbench {} (commit {}), {} {}, flags `{}`; generated {:%Y-%m-%d %H:%M} UTC.\n\n",
+    md += fmt::format("rotbench {} (commit {}), {} {}, flags `{}`, on {}; generated {:%Y-%m-%d %H:%M} UTC.\n\n",
                       build_info::version, build_info::commit, build_info::compiler, build_info::build_type,
-                      build_info::flags, fmt::gmtime(std::chrono::system_clock::to_time_t(std::chrono::system_clock::now())));
+                      build_info::flags, cpu_model(),
+                      fmt::gmtime(std::chrono::system_clock::to_time_t(std::chrono::system_clock::now())));
     md += fmt::format("Command: `{}`\n\n", command_line);
     const auto unstable = std::count_if(results.begin(), results.end(), [](const RunResult& r) { return r.value("unstable") != 0.0; });
     md += fmt::format("{} runs, {} unstable or failed. Errors are in rad/s (angular velocity) and rad (orientation); "
                       "drifts are relative; ns_per_step is the median per-thread CPU time of a run without the "
                       "metrics, divided by its steps.\n\n",
                       results.size(), unstable);
-    for (const auto& scene : unique_in_order(results, &RunSpec::scene)) scene_section(md, scene, results);
+    const auto orders = observed_orders(results);
+    summary_section(md, results, orders);
+    for (const auto& scene : unique_in_order(results, &RunSpec::scene)) scene_section(md, scene, results, orders, dir);
     table1_section(md, results);
     md += energy_series_section(results, dir);
     schemes_section(md, results);
-    md += "## Metrics\n\n"
+    md += "## Metrics and the order fit\n\n"
           "- `omega_rms_x/y/z`: root mean square over all steps of the body-frame angular-velocity error "
           "(each solution in its own body frame), the seed's Table 1 quantity.\n"
           "- `omega_err_max`: max |w - w_ref| in the world frame. `orientation_err_max`: max rotation angle "
           "between q and q_ref.\n"
           "- `energy_drift_max`: max |E - E0|/|E0|; `energy_drift_rate`: slope (1/s) of the least-squares line "
-          "through its running maximum, the secular drift. `momentum_drift_max`: max |L - L0|/|L0| (torque-free scenes). "
-          "`quat_norm_err_max`: max ||q| - 1| (no scheme renormalises q).\n"
-          "- `unstable`: 1 when the state became NaN/Inf, the energy error passed 1e6 times the initial energy, "
-          "or the scheme threw; the run stops there and its error metrics are NaN.\n";
+          "through its running maximum, the secular drift. `momentum_drift_max`: max |L - L0|/|L0| (torque-free "
+          "scenes). `quat_norm_err_max`: max ||q| - 1| (no scheme renormalises q).\n"
+          "- `cpu_seconds` (median), `cpu_seconds_min`, `cpu_seconds_max` over `timing_repeats` runs after a "
+          "warm-up (a run longer than 0.5 s is timed once), on the per-thread CPU clock.\n"
+          "- `unstable`: 1 when the state became NaN/Inf, the energy error of a conservative scene passed 1e6 "
+          "times the initial energy, or the scheme threw; the run stops there and its error metrics are NaN.\n"
+          "- Observed order (`orders.csv`; local orders between successive steps in `local_orders.csv`): "
+          "least-squares slope of log error against log dt with a 95 % Student-t interval, over the asymptotic "
+          "range only. Failed runs and errors below 1e-13 are dropped; from the coarsest step, the first "
+          "error not below 0.9 times the previous one starts a round-off plateau, dropped with every finer "
+          "step; the range is then the longest run ending at the finest step whose local orders lie within "
+          "0.3 of their median. Fewer than 3 points: \"insufficient\".\n";
     return md;
 }
 

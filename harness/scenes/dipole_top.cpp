@@ -42,6 +42,7 @@ public:
     }
 
     ReferenceKind reference_kind() const override { return ReferenceKind::odeint; }
+    bool torque_depends_on_orientation() const override { return true; }
     double energy(const Bodies& b) const override { return rotational_energy(b) + potential(b); }
     std::vector<std::pair<std::string, double>> energy_parts(const Bodies& b) const override {
         return {{"rotational", rotational_energy(b)}, {"potential", potential(b)}};
