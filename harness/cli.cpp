@@ -89,6 +89,7 @@ int run(const RunOptionsText& o, const std::string& command_line, std::ostream& 
         },
         o.jobs);
     write_file_atomically(dir / "results.csv", results_csv(results));
+    write_file_atomically(dir / "runs.csv", runs_csv(results));
     const auto orders = observed_orders(results);
     write_file_atomically(dir / "orders.csv", orders_csv(orders));
     write_file_atomically(dir / "local_orders.csv", local_orders_csv(orders));
@@ -159,6 +160,9 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
     }
     trajectory_cmd->add_option("--scheme", traj_o.scheme, "scheme id")->required();
     trajectory_cmd->add_option("--dt", traj_o.dt, "time step in s")->required();
+    auto* report_cmd = app.add_subcommand("report", "re-render report.md and its plots from the CSVs in DIR");
+    std::string report_dir;
+    report_cmd->add_option("DIR", report_dir, "a directory written by rotbench run")->required();
     std::string params_of;
     list_cmd->add_option("--params", params_of, "list the parameters of this scene");
 
@@ -166,13 +170,19 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
     for (int i = 1; i < argc; ++i) command_line += std::string(" ") + argv[i];
     try {
         const std::vector<std::string> commands = {list_cmd->get_name(), run_cmd->get_name(), reference_cmd->get_name(),
-                                                   trajectory_cmd->get_name()};
+                                                   trajectory_cmd->get_name(), report_cmd->get_name()};
         if (argc > 1 && argv[1][0] != '-' && std::find(commands.begin(), commands.end(), argv[1]) == commands.end())
             throw InputError(std::string("unknown command '") + argv[1] + "'; valid commands: " + join(commands, ", "));
         app.parse(argc, argv);
         if (*list_cmd) {
             if (params_of.empty()) list(out);
             else list_params(params_of, out);
+            return 0;
+        }
+        if (*report_cmd) {
+            const auto results = read_results(report_dir);
+            write_file_atomically(std::filesystem::path(report_dir) / "report.md", markdown_report(results, command_line, report_dir));
+            out << "wrote " << (std::filesystem::path(report_dir) / "report.md").string() << "\n";
             return 0;
         }
         if (*reference_cmd) {

@@ -6,11 +6,13 @@
 
 namespace rotbench {
 
-std::vector<std::string> split_commas(const std::string& text) {
+std::vector<std::string> split_commas(const std::string& text) { return split_on(text, ','); }
+
+std::vector<std::string> split_on(const std::string& text, char separator) {
     std::vector<std::string> parts;
     std::size_t start = 0;
     while (true) {
-        const std::size_t comma = text.find(',', start);
+        const std::size_t comma = text.find(separator, start);
         parts.push_back(text.substr(start, comma - start));
         if (comma == std::string::npos) return parts;
         start = comma + 1;

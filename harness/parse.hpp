@@ -24,6 +24,7 @@ std::vector<std::string> parse_id_list(const std::string& text, const Registry<P
                                        const std::string& kind);
 
 std::vector<std::string> split_commas(const std::string& text);
+std::vector<std::string> split_on(const std::string& text, char separator);
 
 }  // namespace rotbench
 

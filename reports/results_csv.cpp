@@ -1,6 +1,14 @@
 #include "reports/results_csv.hpp"
 
+#include "harness/parse.hpp"
 #include "reports/output_files.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <fmt/format.h>
+#include <fstream>
+#include <map>
+#include <tuple>
 
 namespace rotbench {
 
@@ -11,6 +19,90 @@ std::string results_csv(const std::vector<RunResult>& results) {
             csv += r.spec.scene + "," + r.spec.scheme + "," + format_number(r.spec.dt) + "," + metric + "," +
                    format_number(value) + "\n";
     return csv;
+}
+
+std::string runs_csv(const std::vector<RunResult>& results) {
+    std::string csv = "scene,scheme,dt,t_end,params,failure\n";
+    for (const auto& r : results) {
+        std::string params;
+        for (const auto& [key, values] : r.spec.params) {
+            params += (params.empty() ? "" : ";") + key + "=";
+            for (std::size_t i = 0; i < values.size(); ++i) params += (i ? " " : "") + format_number(values[i]);
+        }
+        std::string failure = r.failure;
+        std::replace(failure.begin(), failure.end(), ',', ';');
+        std::replace(failure.begin(), failure.end(), '\n', ' ');
+        csv += r.spec.scene + "," + r.spec.scheme + "," + format_number(r.spec.dt) + "," + format_number(r.spec.t_end) +
+               "," + params + "," + failure + "\n";
+    }
+    return csv;
+}
+
+namespace {
+
+std::vector<std::vector<std::string>> read_csv(const std::filesystem::path& path, const std::string& header) {
+    std::ifstream in(path);
+    if (!in) throw InputError("cannot read " + path.string());
+    std::string line;
+    if (!std::getline(in, line) || line != header)
+        throw InputError(path.string() + ":1: expected the header '" + header + "'");
+    std::vector<std::vector<std::string>> rows;
+    for (int number = 2; std::getline(in, line); ++number) {
+        auto fields = split_commas(line);
+        if (fields.size() != split_commas(header).size())
+            throw InputError(fmt::format("{}:{}: expected {} fields", path.string(), number, split_commas(header).size()));
+        rows.push_back(std::move(fields));
+    }
+    return rows;
+}
+
+double number(const std::string& text, const std::filesystem::path& path) {
+    double v = 0;
+    const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+    if (ec != std::errc() || ptr != text.data() + text.size()) throw InputError(path.string() + ": '" + text + "' is not a number");
+    return v;
+}
+
+}  // namespace
+
+std::vector<RunResult> read_results(const std::filesystem::path& dir) {
+    std::vector<RunResult> results;
+    std::map<std::tuple<std::string, std::string, double>, std::size_t> index;
+    for (const auto& f : read_csv(dir / "runs.csv", "scene,scheme,dt,t_end,params,failure")) {
+        RunResult r;
+        r.spec.scene = f[0];
+        r.spec.scheme = f[1];
+        r.spec.dt = number(f[2], dir / "runs.csv");
+        r.spec.t_end = number(f[3], dir / "runs.csv");
+        for (const auto& item : split_on(f[4], ';')) {
+            if (item.empty()) continue;
+            const auto eq = item.find('=');
+            std::vector<double> values;
+            for (const auto& v : split_on(item.substr(eq + 1), ' ')) values.push_back(number(v, dir / "runs.csv"));
+            r.spec.params.push_back({item.substr(0, eq), values});
+        }
+        r.failure = f[5];
+        index[{r.spec.scene, r.spec.scheme, r.spec.dt}] = results.size();
+        results.push_back(std::move(r));
+    }
+    for (const auto& f : read_csv(dir / "results.csv", "scene,scheme,dt,metric,value")) {
+        const auto it = index.find({f[0], f[1], number(f[2], dir / "results.csv")});
+        if (it == index.end()) throw InputError((dir / "results.csv").string() + ": a run that runs.csv does not list");
+        results[it->second].metrics.emplace_back(f[3], number(f[4], dir / "results.csv"));
+    }
+    for (auto& r : results) {  // energy series, where the run recorded one
+        const auto path = dir / "series" / fmt::format("energy_{}_{}_dt{:g}.csv", r.spec.scene, r.spec.scheme, r.spec.dt);
+        std::ifstream in(path);
+        std::string line;
+        if (!in || !std::getline(in, line)) continue;
+        r.series_columns = split_commas(line);
+        while (std::getline(in, line)) {
+            std::vector<double> row;
+            for (const auto& v : split_commas(line)) row.push_back(number(v, path));
+            r.series.push_back(std::move(row));
+        }
+    }
+    return results;
 }
 
 }  // namespace rotbench

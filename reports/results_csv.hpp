@@ -4,11 +4,21 @@
 
 #include "harness/run.hpp"
 
+#include <filesystem>
 #include <string>
 #include <vector>
 
 namespace rotbench {
 
 std::string results_csv(const std::vector<RunResult>& results);
+
+// runs.csv: what results.csv does not hold, so that `rotbench report DIR` can re-render:
+// header scene,scheme,dt,t_end,params,failure; params as KEY=V1 V2 ...;KEY=... and the
+// failure text with commas replaced by semicolons.
+std::string runs_csv(const std::vector<RunResult>& results);
+
+// Reads results.csv and runs.csv (and the energy series under series/) back. InputError
+// when a file is missing or malformed.
+std::vector<RunResult> read_results(const std::filesystem::path& dir);
 
 }  // namespace rotbench

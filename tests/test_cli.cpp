@@ -112,3 +112,23 @@ TEST_CASE("the installed binary exits with status 2 on bad input") {
     REQUIRE(WIFEXITED(raw));
     CHECK(WEXITSTATUS(raw) == 2);
 }
+
+TEST_CASE("rotbench report DIR re-renders the same report from the CSVs, and writes orders.csv") {
+    const fs::path dir = fresh_dir("rerender");
+    REQUIRE(cli({"run", "--scenes", "dipole_top,fibre_bounce", "--schemes", "direct,zvw", "--quick", "--out", dir.string()}).status == 0);
+    const std::string orders = read(dir / "orders.csv");
+    CHECK(orders.rfind("scene,scheme,metric,order,order_lo,order_hi,dt_min,dt_max,points\n", 0) == 0);
+    CHECK_THAT(orders, Catch::Contains("dipole_top,direct,omega_err_max,"));
+    auto body = [](std::string md) {  // without the provenance line and the command, which differ
+        std::string out, line;
+        std::istringstream in(md);
+        while (std::getline(in, line))
+            if (line.rfind("rotbench 0", 0) != 0 && line.rfind("Command:", 0) != 0) out += line + "\n";
+        return out;
+    };
+    const std::string first = body(read(dir / "report.md"));
+    REQUIRE(cli({"report", dir.string()}).status == 0);
+    CHECK(body(read(dir / "report.md")) == first);
+    CHECK(cli({"report", (dir / "missing").string()}).status == 2);
+    fs::remove_all(dir);
+}
