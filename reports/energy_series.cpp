@@ -97,7 +97,7 @@ std::string energy_series_section(const std::vector<RunResult>& results, const s
         std::stable_sort(ranked.begin(), ranked.end(), [](const RunResult* a, const RunResult* b) {
             return final_error(*a) < final_error(*b);
         });
-        md += "| scheme | |energy error| at the end | largest |energy error| |\n|---|---:|---:|\n";
+        md += "| scheme | energy error at the end (abs.) | largest energy error (abs.) |\n|---|---:|---:|\n";
         for (const RunResult* r : ranked)
             md += fmt::format("| {} | {:.3e} | {:.3e} |\n", r->spec.scheme, final_error(*r), r->value("energy_drift_max"));
         std::string order;
