@@ -61,8 +61,9 @@ public:
     // energy_drift_max would measure physics, not error), the angular momentum only
     // without external torque.
     virtual bool conserves_energy() const { return true; }
-    // Scenes whose report shows the energy against time (the seed's Figures 8-11).
-    virtual bool reports_energy_series() const { return false; }
+    // Scenes whose report shows the energy against time (the seed's Figures 8-11 for the
+    // fibre): every scene whose true motion conserves it.
+    bool reports_energy_series() const { return conserves_energy(); }
     virtual bool conserves_angular_momentum() const { return false; }
     // The torque seen in the body frame changes with the orientation (dipole_top): the
     // class of scenes where reports/expected_orders.hpp's "with torque" orders apply.

@@ -86,7 +86,6 @@ public:
         for (const Vec3& offset : offsets_) gaps.push_back(b.position[0].z() + to_world(b.orientation[0], offset).z() - radius_);
         return gaps;
     }
-    bool reports_energy_series() const override { return true; }
     double energy(const Bodies& b) const override {
         double e = 0.0;
         for (const auto& part : energy_parts(b)) e += part.second;
