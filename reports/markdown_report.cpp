@@ -41,6 +41,24 @@ std::vector<std::string> unique_in_order(const std::vector<RunResult>& results, 
     return out;
 }
 
+// The metrics of `candidates` that any of `runs` has, in the order given.
+std::vector<std::string> present(const std::vector<std::string>& candidates, const std::vector<const RunResult*>& runs) {
+    std::vector<std::string> out;
+    for (const auto& m : candidates)
+        if (std::any_of(runs.begin(), runs.end(), [&](const RunResult* r) { return r->has(m); })) out.push_back(m);
+    return out;
+}
+
+// A Markdown table head: a text column, one more right-aligned column per `numeric`.
+std::string table_head(const std::string& first, const std::vector<std::string>& numeric) {
+    std::string head = "| " + first + " |", rule = "|---|";
+    for (const auto& c : numeric) {
+        head += " " + c + " |";
+        rule += "---:|";
+    }
+    return head + "\n" + rule + "\n";
+}
+
 std::string cpu_model() {
     std::ifstream in("/proc/cpuinfo");
     for (std::string line; std::getline(in, line);)
@@ -110,12 +128,13 @@ void summary_section(std::string& md, const std::vector<RunResult>& results, con
 
     md += "## Summary\n\nObserved order of the angular-velocity error (`omega_err_max`) per scene, with its 95 % "
           "interval; the error and the energy drift at one step size common to all schemes; cost per step "
-          "relative to `direct` (geometric mean over every scene and step both ran).\n\n| scheme |";
-    for (const auto& s : order_scenes) md += fmt::format(" order, {} |", s);
-    md += fmt::format(" omega_err_max, {} dt = {:g} | energy_drift_max, {} dt = {:g} | cost / direct |\n|---|", error_scene,
-                      error_dt, energy_scene, energy_dt);
-    for (std::size_t i = 0; i < order_scenes.size() + 3; ++i) md += "---:|";
-    md += "\n";
+          "relative to `direct` (geometric mean over every scene and step both ran).\n\n";
+    std::vector<std::string> summary_columns;
+    for (const auto& s : order_scenes) summary_columns.push_back("order, " + s);
+    summary_columns.push_back(fmt::format("omega_err_max, {} dt = {:g}", error_scene, error_dt));
+    summary_columns.push_back(fmt::format("energy_drift_max, {} dt = {:g}", energy_scene, energy_dt));
+    summary_columns.push_back("cost / direct");
+    md += table_head("scheme", summary_columns);
     for (const auto& scheme : unique_in_order(results, &RunSpec::scheme)) {
         md += "| " + scheme + " |";
         for (const auto& s : order_scenes) md += " " + order_cell(find_order(orders, s, scheme, "omega_err_max")) + " |";
@@ -159,14 +178,10 @@ void scene_section(std::string& md, const std::string& scene_id, const std::vect
     // torque fixed in the body (torqued_cylinder) is a third case, left without a claim.
     const bool expectation = scene->has_reference() && (scene->conserves_angular_momentum() || scene->torque_depends_on_orientation());
     const bool torque = scene->torque_depends_on_orientation();
-    std::vector<std::string> metrics;
-    for (const auto& m : order_metrics)
-        if (std::any_of(runs.begin(), runs.end(), [&](const RunResult* r) { return r->has(m); })) metrics.push_back(m);
-    md += "| scheme | expected |";
-    for (const auto& m : metrics) md += " order of " + m + " |";
-    md += "\n|---|---:|";
-    for (std::size_t i = 0; i < metrics.size(); ++i) md += "---:|";
-    md += "\n";
+    const auto metrics = present(order_metrics, runs);
+    std::vector<std::string> order_columns = {"expected"};
+    for (const auto& m : metrics) order_columns.push_back("order of " + m);
+    md += table_head("scheme", order_columns);
     for (const auto& scheme : unique_in_order(results, &RunSpec::scheme)) {
         if (std::none_of(runs.begin(), runs.end(), [&](const RunResult* r) { return r->spec.scheme == scheme; })) continue;
         std::string expected = "—";
@@ -179,14 +194,10 @@ void scene_section(std::string& md, const std::string& scene_id, const std::vect
     }
     md += "\n";
 
-    std::vector<std::string> columns;
-    for (const auto& m : table_metrics)
-        if (std::any_of(runs.begin(), runs.end(), [&](const RunResult* r) { return r->has(m); })) columns.push_back(m);
-    md += "<details><summary>Every run</summary>\n\n| scheme | dt (s) |";
-    for (const auto& c : columns) md += " " + c + " |";
-    md += "\n|---|---:|";
-    for (std::size_t i = 0; i < columns.size(); ++i) md += "---:|";
-    md += "\n";
+    const auto columns = present(table_metrics, runs);
+    std::vector<std::string> run_columns = {"dt (s)"};
+    run_columns.insert(run_columns.end(), columns.begin(), columns.end());
+    md += "<details><summary>Every run</summary>\n\n" + table_head("scheme", run_columns);
     for (const RunResult* r : runs) {
         md += fmt::format("| {} | {:g} |", r->spec.scheme, r->spec.dt);
         for (const auto& c : columns) md += " " + cell(c, r->value(c)) + " |";
