@@ -123,7 +123,7 @@ TEST_CASE("bad sweep inputs are rejected before anything runs, naming the valid 
     CHECK_THROWS_AS(plan_sweep({{"cylinder_free"}, {"direct"}, {1e-3}, 1e-4}), InputError);
 }
 
-TEST_CASE("--jobs does not change the results: bit-identical apart from the timing metrics") {
+TEST_CASE("the option --jobs does not change the results: bit-identical apart from the timing metrics") {
     SweepSpec spec;
     spec.scenes = {"asymmetric_free", "dipole_top"};
     spec.quick = true;
