@@ -3,6 +3,7 @@
 #include "harness/config.hpp"
 #include "harness/export.hpp"
 #include "harness/parse.hpp"
+#include "harness/stability_study.hpp"
 #include "harness/sweep.hpp"
 #include "reports/markdown_report.hpp"
 #include "reports/orders.hpp"
@@ -163,6 +164,18 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
     auto* report_cmd = app.add_subcommand("report", "re-render report.md and its plots from the CSVs in DIR");
     std::string report_dir;
     report_cmd->add_option("DIR", report_dir, "a directory written by rotbench run")->required();
+    auto* stability_cmd = app.add_subcommand("stability", "stability limits: measured, from eigenvalues, and Peng et al.'s");
+    std::string stab_scenes = "sphere_pair,ellipsoid_pair,fast_spin", stab_schemes, stab_zetas = "0,0.1,0.3,0.5",
+                stab_omegas = "10,100,1000", stab_out = "rotbench-stability";
+    bool stab_overwrite = false;
+    int stab_jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    stability_cmd->add_option("--scenes", stab_scenes, "contact scenes")->capture_default_str();
+    stability_cmd->add_option("--schemes", stab_schemes, "comma list of scheme ids (default: all)");
+    stability_cmd->add_option("--zeta", stab_zetas, "damping ratios (contact scenes)")->capture_default_str();
+    stability_cmd->add_option("--omega-max", stab_omegas, "spin rates, rad/s (fast_spin)")->capture_default_str();
+    stability_cmd->add_option("--out", stab_out, "output directory")->capture_default_str();
+    stability_cmd->add_option("--jobs", stab_jobs, "cases in parallel")->check(CLI::PositiveNumber);
+    stability_cmd->add_flag("--overwrite", stab_overwrite, "replace results already in --out");
     std::string params_of;
     list_cmd->add_option("--params", params_of, "list the parameters of this scene");
 
@@ -170,13 +183,38 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
     for (int i = 1; i < argc; ++i) command_line += std::string(" ") + argv[i];
     try {
         const std::vector<std::string> commands = {list_cmd->get_name(), run_cmd->get_name(), reference_cmd->get_name(),
-                                                   trajectory_cmd->get_name(), report_cmd->get_name()};
+                                                   trajectory_cmd->get_name(), report_cmd->get_name(),
+                                                   stability_cmd->get_name()};
         if (argc > 1 && argv[1][0] != '-' && std::find(commands.begin(), commands.end(), argv[1]) == commands.end())
             throw InputError(std::string("unknown command '") + argv[1] + "'; valid commands: " + join(commands, ", "));
         app.parse(argc, argv);
         if (*list_cmd) {
             if (params_of.empty()) list(out);
             else list_params(params_of, out);
+            return 0;
+        }
+        if (*stability_cmd) {
+            const auto scenes = parse_id_list(stab_scenes, SceneRegistry::instance(), "scene");
+            const auto schemes = stab_schemes.empty() ? SchemeRegistry::instance().ids()
+                                                      : parse_id_list(stab_schemes, SchemeRegistry::instance(), "scheme");
+            std::vector<double> zetas;
+            for (const auto& z : split_commas(stab_zetas)) {
+                const double v = parse_finite(z, "--zeta");
+                if (v < 0) throw InputError("--zeta: '" + z + "' must not be negative");
+                zetas.push_back(v);
+            }
+            const auto omegas = parse_positive_list(stab_omegas, "--omega-max");
+            const std::filesystem::path dir(stab_out);
+            if (std::filesystem::exists(dir / "stability.csv") && !stab_overwrite)
+                throw InputError("--out " + stab_out + " already holds stability.csv; pass --overwrite or choose another directory");
+            std::filesystem::create_directories(dir);
+            const auto rows = stability_study(scenes, schemes, zetas, omegas, stab_jobs);
+            write_file_atomically(dir / "stability.csv", stability_csv(rows));
+            write_file_atomically(dir / "stability_spin.csv", stability_spin_csv(rows));
+            write_file_atomically(dir / "stability.md", "# rotbench stability\n\nCommand: `" + command_line + "`\n\n" +
+                                                            stability_section(rows, dir) +
+                                                            spectral_radius_plots(scenes, schemes, dir));
+            out << "wrote " << (dir / "stability.csv").string() << " and " << (dir / "stability.md").string() << "\n";
             return 0;
         }
         if (*report_cmd) {

@@ -132,3 +132,15 @@ TEST_CASE("rotbench report DIR re-renders the same report from the CSVs, and wri
     CHECK(cli({"report", (dir / "missing").string()}).status == 2);
     fs::remove_all(dir);
 }
+
+TEST_CASE("rotbench stability writes stability.csv with the contract header, and rejects bad input") {
+    const fs::path dir = fresh_dir("stability");
+    REQUIRE(cli({"stability", "--scenes", "sphere_pair", "--schemes", "direct", "--zeta", "0", "--out", dir.string()}).status == 0);
+    const std::string csv = read(dir / "stability.csv");
+    CHECK(csv.rfind("scene,scheme,zeta,dt_empirical,dt_amplification,dt_peng\n", 0) == 0);
+    CHECK_THAT(read(dir / "stability.md"), Catch::Contains("## Stability limits"));
+    CHECK(cli({"stability", "--scenes", "cylinder_free", "--out", (dir / "x").string()}).status == 2);
+    CHECK(cli({"stability", "--zeta", "-1", "--out", (dir / "y").string()}).status == 2);
+    CHECK(cli({"stability", "--scenes", "sphere_pair", "--schemes", "direct", "--zeta", "0", "--out", dir.string()}).status == 2);
+    fs::remove_all(dir);
+}

@@ -10,12 +10,13 @@
 #pragma once
 
 #include "harness/scene.hpp"
+#include "harness/stability.hpp"
 #include "references/critical_time_step.hpp"
 #include "schemes/quaternion.hpp"
 
 namespace rotbench {
 
-class ContactPairScene : public Scene {
+class ContactPairScene : public Scene, public StabilityProbe {
 public:
     ContactPairScene() {
         params.declare("stiffness", {1e10}, "N/m", "contact stiffness, normal and tangential (k_n = k_s)");
@@ -46,6 +47,13 @@ public:
     double stiffness() const { return stiffness_; }
     double damping() const { return damping_; }
     double a_max() const { return a_max_; }
+    // Seed 004's prediction for this contact: eq. 46 (eq. 47 when undamped).
+    double predicted_limit() const override { return peng::damped(stiffness_, damping_, a_max_); }
+    // The period of the fastest contact mode Peng's analysis assumes, 2 pi / sqrt(k A_max).
+    double period() const override { return 2.0 * 3.141592653589793 / std::sqrt(stiffness_ * a_max_); }
+    bool linearisable_at_rest() const override { return true; }
+    // The textbook Verlet limit 2/w of the normal mode alone, w^2 = k (1/m1 + 1/m2).
+    double verlet_normal_limit() const { return peng::verlet_limit(std::sqrt(stiffness_ * 2.0 / mass_)); }
 
 protected:
     // For the derived scene's prepare(): the bodies (body 2 placed along +x), the anchors

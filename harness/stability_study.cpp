@@ -1,0 +1,173 @@
+#include "harness/stability_study.hpp"
+
+#include "harness/scenes/contact_pair.hpp"
+#include "harness/stability.hpp"
+#include "reports/gnuplot.hpp"
+#include "reports/output_files.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <fmt/format.h>
+#include <map>
+#include <mutex>
+#include <thread>
+
+namespace rotbench {
+
+namespace {
+
+ParamOverrides overrides(const StabilityRow& r) {
+    return r.omega_max > 0 ? ParamOverrides{{"omega_max", {r.omega_max}}} : ParamOverrides{{"zeta", {r.zeta}}};
+}
+
+}  // namespace
+
+std::vector<StabilityRow> stability_study(const std::vector<std::string>& scenes, const std::vector<std::string>& schemes,
+                                          const std::vector<double>& zetas, const std::vector<double>& omegas, int jobs) {
+    std::vector<StabilityRow> rows;
+    for (const auto& scene : scenes) {
+        if (!dynamic_cast<const StabilityProbe*>(make_scene(scene).get()))
+            throw InputError("scene '" + scene + "' is not a stability scene; valid: ellipsoid_pair, fast_spin, sphere_pair");
+        const bool spin = scene == "fast_spin";
+        for (double value : spin ? omegas : zetas)
+            for (const auto& scheme : schemes) rows.push_back({scene, scheme, spin ? 0.0 : value, spin ? value : 0.0});
+    }
+    std::atomic<std::size_t> next{0};
+    auto worker = [&] {
+        for (std::size_t i = next++; i < rows.size(); i = next++) {
+            StabilityRow& r = rows[i];
+            const auto scene = make_scene(r.scene, overrides(r));
+            const auto& probe = dynamic_cast<const StabilityProbe&>(*scene);
+            const StabilityCriterion c{stability_horizon_periods * probe.period(), stability_growth};
+            r.dt_peng = probe.predicted_limit();
+            const auto* pair = dynamic_cast<const ContactPairScene*>(scene.get());
+            r.dt_verlet_normal = pair ? pair->verlet_normal_limit() : NAN;
+            r.dt_empirical = empirical_limit(*scene, r.scheme, r.dt_peng, c);
+            if (probe.linearisable_at_rest()) {
+                r.dt_amplification = amplification_limit(*scene, r.scheme, r.dt_peng, c);
+                r.unstable_at_every_dt = unstable_at_every_dt(*scene, r.scheme, 0.01 * r.dt_peng);
+            } else {
+                r.dt_amplification = NAN;
+            }
+        }
+    };
+    std::vector<std::thread> threads;
+    for (int j = 1; j < std::max(1, jobs); ++j) threads.emplace_back(worker);
+    worker();
+    for (auto& t : threads) t.join();
+    return rows;
+}
+
+std::string spectral_radius_plots(const std::vector<std::string>& scenes, const std::vector<std::string>& schemes,
+                                  const std::filesystem::path& dir) {
+    std::string md;
+    std::filesystem::create_directories(dir / "plots");
+    for (const auto& id : scenes) {
+        const auto scene = make_scene(id);  // the contact scenes default to zeta = 0
+        const auto* probe = dynamic_cast<const StabilityProbe*>(scene.get());
+        if (!probe || !probe->linearisable_at_rest()) continue;
+        std::string data;
+        for (const auto& scheme : schemes) {
+            for (int k = 0; k <= 40; ++k) {
+                const double dt = probe->predicted_limit() / 30.0 * std::pow(90.0, k / 40.0);
+                data += fmt::format("{} {}\n", format_number(dt), format_number(spectral_radius(*scene, step_jacobian(*scene, scheme, dt))));
+            }
+            data += "\n\n";
+        }
+        write_file_atomically(dir / "plots" / fmt::format("spectral_radius_{}.dat", id), data);
+        std::string names;
+        for (const auto& s : schemes) names += (names.empty() ? "" : " ") + s;
+        const std::string script = fmt::format(
+            "set terminal svg size 800,450 dynamic noenhanced font 'sans,12'\nset output 'spectral_radius_{0}.svg'\n"
+            "set title '{0} (undamped): spectral radius of the step map'\nset xlabel 'dt (s)'\nset ylabel 'rho - 1'\n"
+            "set logscale xy\nset format y '%.0e'\nset grid\nset key outside right\nset yrange [1e-10:*]\n"
+            "names = '{1}'\nfile = 'spectral_radius_{0}.dat'\n"
+            "set arrow from {2},graph 0 to {2},graph 1 nohead dt 2 lc 'black'\n"
+            "set label 'Peng' at {2},graph 0.95 offset 0.5,0\n"
+            "plot for [i=1:words(names)] file index (i-1) using 1:($2-1) with linespoints pt 7 ps 0.5 title word(names, i)\n",
+            id, names, format_number(probe->predicted_limit()));
+        if (draw_with_gnuplot(dir / "plots" / fmt::format("spectral_radius_{}.gp", id), script))
+            md += fmt::format("![spectral radius, {0}](plots/spectral_radius_{0}.svg)\n\n", id);
+    }
+    return md;
+}
+
+std::string stability_csv(const std::vector<StabilityRow>& rows) {
+    std::string csv = "scene,scheme,zeta,dt_empirical,dt_amplification,dt_peng\n";
+    for (const auto& r : rows)
+        if (r.omega_max == 0)
+            csv += fmt::format("{},{},{},{},{},{}\n", r.scene, r.scheme, format_number(r.zeta), format_number(r.dt_empirical),
+                           format_number(r.dt_amplification), format_number(r.dt_peng));
+    return csv;
+}
+
+std::string stability_spin_csv(const std::vector<StabilityRow>& rows) {
+    std::string csv = "scene,scheme,omega_max,dt_empirical,dt_peng\n";
+    for (const auto& r : rows)
+        if (r.omega_max > 0)
+            csv += fmt::format("{},{},{},{},{}\n", r.scene, r.scheme, format_number(r.omega_max), format_number(r.dt_empirical),
+                               format_number(r.dt_peng));
+    return csv;
+}
+
+std::string stability_section(const std::vector<StabilityRow>& rows, const std::filesystem::path& dir) {
+    std::string md = fmt::format(
+        "## Stability limits\n\n"
+        "For each scene (damping ratio zeta or spin rate w_max) and scheme: the largest stable dt measured (bracketing and "
+        "bisection to 0.5 %), the limit from the eigenvalues of the scheme's own linearised step map, and the "
+        "prediction of Peng et al. (seed 004, eq. 46; eq. 47 undamped). Criterion, the same for both: unstable "
+        "when the energy grows by {:g} within {:g} periods of the fastest contact mode (2 pi / sqrt(k A_max)), "
+        "i.e. rho^(2N) >= {:g} over those N steps. \"weak\": rho > 1 at every dt (rho - 1 ~ dt^2): such a scheme "
+        "gains energy at any step, and its limit is only where the gain over the horizon reaches the criterion. "
+        "Peng's step is conservative where it is at most the measured limit. `fast_spin` (rotation-dominant, eq. 57) "
+        "has no eigenvalue limit here: a spin is not a state at rest to linearise about; its horizon counts spin "
+        "periods.\n\n"
+        "| scene | zeta | w_max (rad/s) | scheme | measured (s) | eigenvalues (s) | Peng (s) | measured / Peng | Peng conservative? | Verlet, normal mode (s) |\n"
+        "|---|---:|---:|---|---:|---:|---:|---:|---|---:|\n",
+        stability_growth, stability_horizon_periods, stability_growth);
+    for (const auto& r : rows) {
+        const double ratio = r.dt_empirical / r.dt_peng;
+        auto number = [](double v) {
+            return std::isnan(v) ? std::string("—") : std::isinf(v) ? std::string("none found") : fmt::format("{:.4e}", v);
+        };
+        md += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |\n", r.scene,
+                          r.omega_max > 0 ? "—" : fmt::format("{:g}", r.zeta), r.omega_max > 0 ? fmt::format("{:g}", r.omega_max) : "—",
+                          r.scheme + (r.unstable_at_every_dt ? " (weak)" : ""), number(r.dt_empirical),
+                          number(r.dt_amplification), number(r.dt_peng),
+                          std::isinf(ratio) ? std::string("∞") : fmt::format("{:.3f}", ratio), ratio >= 1.0 ? "yes" : "**no**",
+                          number(r.dt_verlet_normal));
+    }
+    // Limit against zeta, per scene: one line per scheme and Peng's prediction.
+    std::map<std::string, std::vector<const StabilityRow*>> by_scene;
+    for (const auto& r : rows)
+        if (r.omega_max == 0) by_scene[r.scene].push_back(&r);
+    std::filesystem::create_directories(dir / "plots");
+    md += "\n";
+    for (const auto& [scene, list] : by_scene) {
+        std::string data, names;
+        std::vector<std::string> schemes;
+        for (const auto* r : list)
+            if (std::find(schemes.begin(), schemes.end(), r->scheme) == schemes.end()) schemes.push_back(r->scheme);
+        for (const auto& s : schemes) {
+            names += (names.empty() ? "" : " ") + s;
+            for (const auto* r : list)
+                if (r->scheme == s) data += fmt::format("{} {} {} {}\n", r->zeta, format_number(r->dt_empirical),
+                                                        format_number(r->dt_amplification), format_number(r->dt_peng));
+            data += "\n\n";
+        }
+        write_file_atomically(dir / "plots" / fmt::format("stability_{}.dat", scene), data);
+        const std::string script = fmt::format(
+            "set terminal svg size 800,450 dynamic noenhanced font 'sans,12'\nset output 'stability_{0}.svg'\n"
+            "set title '{0}: stability limit against damping ratio'\nset xlabel 'zeta'\nset ylabel 'dt (s)'\n"
+            "set logscale y\nset grid\nset key outside right\nnames = '{1}'\nfile = 'stability_{0}.dat'\n"
+            "plot for [i=1:words(names)] file index (i-1) using 1:2 with linespoints pt 7 title word(names, i), "
+            "file index 0 using 1:4 with lines dt 2 lc 'black' title 'Peng (eq. 46)'\n",
+            scene, names);
+        if (draw_with_gnuplot(dir / "plots" / fmt::format("stability_{}.gp", scene), script))
+            md += fmt::format("![stability, {0}](plots/stability_{0}.svg)\n\n", scene);
+    }
+    return md;
+}
+
+}  // namespace rotbench

@@ -1,0 +1,43 @@
+// `rotbench stability`: every selected scheme on every selected contact scene and damping
+// ratio; the measured limit, the eigenvalue limit and Peng et al.'s prediction.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace rotbench {
+
+struct StabilityRow {
+    std::string scene, scheme;
+    double zeta = 0;       // contact scenes
+    double omega_max = 0;  // fast_spin
+    double dt_empirical = 0, dt_amplification = 0, dt_peng = 0, dt_verlet_normal = 0;
+    bool unstable_at_every_dt = false;  // rho > 1 + 1e-6 already at dt_peng / 100
+};
+
+// The criterion: energy growth by 1e6 within 1000 periods of the fastest contact mode.
+inline constexpr double stability_horizon_periods = 1000.0;
+inline constexpr double stability_growth = 1e6;
+
+// Contact scenes run once per zeta, fast_spin once per omega_max; the eigenvalue limit is
+// NaN where the scene's state is not an equilibrium at rest.
+std::vector<StabilityRow> stability_study(const std::vector<std::string>& scenes, const std::vector<std::string>& schemes,
+                                          const std::vector<double>& zetas, const std::vector<double>& omegas, int jobs);
+
+// stability.csv (DESIGN.md contract): scene,scheme,zeta,dt_empirical,dt_amplification,dt_peng,
+// one row per contact scene, scheme and zeta. The spin sweep, keyed by w_max (which the
+// contract has no column for), goes to stability_spin.csv:
+// scene,scheme,omega_max,dt_empirical,dt_peng.
+std::string stability_csv(const std::vector<StabilityRow>& rows);
+std::string stability_spin_csv(const std::vector<StabilityRow>& rows);
+// Spectral radius of each scheme's step map against dt, undamped, for each contact scene
+// among `scenes` (dt from 1/30 to 3 times Peng's prediction): data, script and SVG under
+// dir/plots, and the Markdown that shows them.
+std::string spectral_radius_plots(const std::vector<std::string>& scenes, const std::vector<std::string>& schemes,
+                                  const std::filesystem::path& dir);
+
+// The report section (Markdown), with plots drawn under dir/plots.
+std::string stability_section(const std::vector<StabilityRow>& rows, const std::filesystem::path& dir);
+
+}  // namespace rotbench

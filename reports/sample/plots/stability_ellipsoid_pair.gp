@@ -1,0 +1,11 @@
+set terminal svg size 800,450 dynamic noenhanced font 'sans,12'
+set output 'stability_ellipsoid_pair.svg'
+set title 'ellipsoid_pair: stability limit against damping ratio'
+set xlabel 'zeta'
+set ylabel 'dt (s)'
+set logscale y
+set grid
+set key outside right
+names = 'direct munjiza_rk4 zvw zvw_corrected'
+file = 'stability_ellipsoid_pair.dat'
+plot for [i=1:words(names)] file index (i-1) using 1:2 with linespoints pt 7 title word(names, i), file index 0 using 1:4 with lines dt 2 lc 'black' title 'Peng (eq. 46)'
