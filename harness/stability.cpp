@@ -128,14 +128,6 @@ struct StepMap {
 
 }  // namespace
 
-Eigen::VectorXd step_map_debug(const Scene& scene, const std::string& scheme, double dt, int steps) {
-    const StepMap map(scene, scheme, dt);
-    Bodies b = scene.initial_state();
-    scene.evaluate_forces(b, 0.0);
-    Eigen::VectorXd s = map.state(b);
-    for (int k = 0; k < steps; ++k) s = map(s);
-    return s;
-}
 
 StepJacobian step_jacobian(const Scene& scene, const std::string& scheme_id, double dt) {
     const StepMap map(scene, scheme_id, dt);

@@ -61,9 +61,6 @@ StepJacobian step_jacobian(const Scene& scene, const std::string& scheme, double
 // C^T J C with C an orthonormal complement of R.
 double spectral_radius(const Scene& scene, const StepJacobian& jacobian);
 
-// The state after `steps` steps of the step map from the scene's initial state (tests).
-Eigen::VectorXd step_map_debug(const Scene& scene, const std::string& scheme, double dt, int steps);
-
 // The dt where rho(dt)^(2 horizon/dt) reaches `growth`, by the same bracketing and bisection.
 double amplification_limit(const Scene& scene, const std::string& scheme, double dt_guess, const StabilityCriterion& c,
                            double tolerance = 0.005);
