@@ -1,0 +1,18 @@
+set terminal svg size 800,480 dynamic noenhanced font 'sans,12'
+set logscale xy
+set format x '%g'
+set format y '%.0e'
+set grid
+set key outside right
+names = 'direct munjiza_rk4 zvw zvw_corrected'
+file = 'runs_fast_spin.dat'
+set output 'work_precision_fast_spin.svg'
+set multiplot layout 1,2 title 'fast_spin: omega_err_max against cost'
+set xlabel 'CPU time (s)'
+set ylabel 'omega_err_max'
+unset key
+plot for [i=1:words(names)] file index (i-1) using 3:2 with linespoints pt 7 ps 0.6 title word(names, i)
+set xlabel 'force evaluations'
+set key outside right
+plot for [i=1:words(names)] file index (i-1) using 4:2 with linespoints pt 7 ps 0.6 title word(names, i)
+unset multiplot
