@@ -55,10 +55,12 @@ StepJacobian step_jacobian(const Scene& scene, const std::string& scheme, double
 
 // The spectral radius of the step map without its rigid-body motions. Bodies that only
 // push on each other can translate and rotate together, and do so at any speed: twelve
-// neutral directions (eigenvalue 1, defective), which finite differences would split by
-// the square or cube root of round-off (1e-4 .. 1e-3) and take for growth. They span an
-// invariant subspace R; the eigenvalues that matter are those of the map on the quotient,
-// C^T J C with C an orthonormal complement of R.
+// neutral directions (eigenvalue 1, defective), which finite differences split by a root
+// of their error and which would read as growth. They span an invariant subspace R; the
+// eigenvalues that matter are those of the map on the quotient, C^T J C with C an
+// orthonormal complement of R. (Measured on sphere_pair with the scaled differences of
+// step_jacobian: rho - 1 of a stable scheme is ~1.2e-8 without the projection, 1e-15 to
+// 8e-9 with it.)
 double spectral_radius(const Scene& scene, const StepJacobian& jacobian);
 
 // The dt where rho(dt)^(2 horizon/dt) reaches `growth`, by the same bracketing and bisection.
