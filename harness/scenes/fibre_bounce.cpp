@@ -86,27 +86,28 @@ public:
         for (const Vec3& offset : offsets_) gaps.push_back(b.position[0].z() + to_world(b.orientation[0], offset).z() - radius_);
         return gaps;
     }
+    // energy() runs at every step of a run; it adds the parts without building their names.
     double energy(const Bodies& b) const override {
-        double e = 0.0;
-        for (const auto& part : energy_parts(b)) e += part.second;
-        return e;
+        return translational_energy(b) + rotational_energy(b) + potential(b) + elastic(b);
     }
     std::vector<std::pair<std::string, double>> energy_parts(const Bodies& b) const override {
-        const Quat q = b.orientation[0];
-        const Vec3 centre = b.position[0];
-        double elastic = 0.0;
-        for (const Vec3& offset : offsets_) {
-            const double overlap = radius_ - (centre.z() + to_world(q, offset).z());
-            // Hertz potential: 8/15 E* sqrt(R) delta^(5/2).
-            if (overlap > 0.0) elastic += 8.0 / 15.0 * effective_modulus_ * std::sqrt(radius_) * overlap * overlap * std::sqrt(overlap);
-        }
         return {{"translational", translational_energy(b)},
                 {"rotational", rotational_energy(b)},
-                {"potential", mass_ * gravity_ * centre.z()},
-                {"elastic", elastic}};
+                {"potential", potential(b)},
+                {"elastic", elastic(b)}};
     }
 
 private:
+    double potential(const Bodies& b) const { return mass_ * gravity_ * b.position[0].z(); }
+    double elastic(const Bodies& b) const {  // Hertz potential: 8/15 E* sqrt(R) delta^(5/2)
+        double e = 0.0;
+        for (const Vec3& offset : offsets_) {
+            const double overlap = radius_ - (b.position[0].z() + to_world(b.orientation[0], offset).z());
+            if (overlap > 0.0) e += 8.0 / 15.0 * effective_modulus_ * std::sqrt(radius_) * overlap * overlap * std::sqrt(overlap);
+        }
+        return e;
+    }
+
     double mass_ = 0, radius_ = 0, effective_modulus_ = 0, gravity_ = 0;
     Vec3 inertia_;
     std::array<Vec3, 5> offsets_;

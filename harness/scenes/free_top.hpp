@@ -29,7 +29,6 @@ protected:
         inertia_ = inertia;
         q0_ = q0;
         omega0_body_ = omega0_body;
-        params.require(omega0_body.allFinite(), "omega0", "must be finite");
         exact_.emplace(inertia, q0, omega0_body);
     }
     const FreeRigidBody& exact_motion() const { return *exact_; }
