@@ -26,8 +26,7 @@ std::string row(const Scene& scene, double t, const Bodies& b) {
 std::string reference_csv(const Scene& scene, int samples) {
     if (samples < 1) throw InputError("--samples must be at least 1");
     const double t_end = scene.t_end();
-    std::vector<double> times(static_cast<std::size_t>(samples) + 1);
-    for (int k = 0; k <= samples; ++k) times[k] = t_end * k / samples;
+    const std::vector<double> times = equally_spaced_times(t_end, samples);
     std::string csv = std::string(trajectory_header) + "\n";
     Bodies b = scene.initial_state();
     const Vec3 x0 = b.position[0], v0 = b.velocity[0];

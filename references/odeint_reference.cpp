@@ -216,9 +216,14 @@ std::shared_ptr<const Trajectory> odeint_reference(const Scene& scene, double dt
     return memory.emplace(key, trajectory).first->second;
 }
 
-CrossCheck cross_check(const Scene& scene, int samples, double tolerance) {
+std::vector<double> equally_spaced_times(double t_end, int samples) {
     std::vector<double> times(static_cast<std::size_t>(samples) + 1);
-    for (int k = 0; k <= samples; ++k) times[k] = scene.t_end() * k / samples;
+    for (int k = 0; k <= samples; ++k) times[k] = t_end * k / samples;
+    return times;
+}
+
+CrossCheck cross_check(const Scene& scene, int samples, double tolerance) {
+    const std::vector<double> times = equally_spaced_times(scene.t_end(), samples);
     const Trajectory a = integrate_scene(scene, times, OdeMethod::fehlberg78, tolerance);
     const Trajectory b = integrate_scene(scene, times, OdeMethod::bulirsch_stoer, tolerance);
     double omega_scale = 0, position_scale = 0;

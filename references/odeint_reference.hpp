@@ -21,6 +21,9 @@ enum class OdeMethod {
 // the fibre's energy error at 1e-9; 1e-14 brings it to 5e-10 and below.
 inline constexpr double reference_tolerance = 1e-14;
 
+// t_k = t_end k / samples, k = 0 .. samples.
+std::vector<double> equally_spaced_times(double t_end, int samples);
+
 Trajectory integrate_scene(const Scene& scene, const std::vector<double>& times, OdeMethod method,
                            double tolerance = reference_tolerance);
 

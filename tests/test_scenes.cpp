@@ -13,12 +13,6 @@ using namespace rotbench;
 
 namespace {
 
-std::vector<double> equally_spaced(double t_end, int samples) {
-    std::vector<double> t;
-    for (int k = 0; k <= samples; ++k) t.push_back(t_end * k / samples);
-    return t;
-}
-
 Bodies state_at(const Scene& scene, const Trajectory& trajectory, std::size_t sample) {
     Bodies b = scene.initial_state();
     const ReferenceState s = trajectory.state(sample, 0);
@@ -40,7 +34,7 @@ TEST_CASE("closed-form scenes agree with Odeint on the same equations of motion"
              {"cylinder_free", 1e-11}, {"asymmetric_free", 1e-11}, {"dzhanibekov", 1e-8}}) {
         INFO(id);
         const auto scene = make_scene(id);
-        const auto times = equally_spaced(scene->t_end(), 200);
+        const auto times = equally_spaced_times(scene->t_end(), 200);
         const Trajectory odeint = integrate_scene(*scene, times, OdeMethod::fehlberg78);
         double omega_err = 0, angle = 0;
         for (std::size_t k = 0; k < times.size(); ++k) {
@@ -55,7 +49,7 @@ TEST_CASE("closed-form scenes agree with Odeint on the same equations of motion"
 
 TEST_CASE("torqued_cylinder: the closed-form angular velocity agrees with Odeint") {
     const auto scene = make_scene("torqued_cylinder");
-    const auto times = equally_spaced(scene->t_end(), 200);
+    const auto times = equally_spaced_times(scene->t_end(), 200);
     const Trajectory odeint = integrate_scene(*scene, times, OdeMethod::fehlberg78);
     double worst = 0;
     for (std::size_t k = 0; k < times.size(); ++k) {
@@ -89,7 +83,7 @@ TEST_CASE("the fibre's Odeint reference conserves energy to 1e-9 relative (issue
     const auto scene = make_scene("fibre_bounce");
     for (int samples : {200, 20000}) {  // sample times cut the steps differently
         INFO(samples << " samples");
-        const auto times = equally_spaced(scene->t_end(), samples);
+        const auto times = equally_spaced_times(scene->t_end(), samples);
         const Trajectory odeint = integrate_scene(*scene, times, OdeMethod::fehlberg78);
         const double e0 = scene->energy(scene->initial_state());
         double worst = 0;
