@@ -1,17 +1,15 @@
 #include "harness/stability_study.hpp"
 
+#include "harness/parallel.hpp"
 #include "harness/scenes/contact_pair.hpp"
 #include "harness/stability.hpp"
 #include "reports/gnuplot.hpp"
 #include "reports/output_files.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <fmt/format.h>
 #include <map>
-#include <mutex>
-#include <thread>
 
 namespace rotbench {
 
@@ -33,29 +31,22 @@ std::vector<StabilityRow> stability_study(const std::vector<std::string>& scenes
         for (double value : spin ? omegas : zetas)
             for (const auto& scheme : schemes) rows.push_back({scene, scheme, spin ? 0.0 : value, spin ? value : 0.0});
     }
-    std::atomic<std::size_t> next{0};
-    auto worker = [&] {
-        for (std::size_t i = next++; i < rows.size(); i = next++) {
-            StabilityRow& r = rows[i];
-            const auto scene = make_scene(r.scene, overrides(r));
-            const auto& probe = dynamic_cast<const StabilityProbe&>(*scene);
-            const StabilityCriterion c{stability_horizon_periods * probe.period(), stability_growth};
-            r.dt_peng = probe.predicted_limit();
-            const auto* pair = dynamic_cast<const ContactPairScene*>(scene.get());
-            r.dt_verlet_normal = pair ? pair->verlet_normal_limit() : NAN;
-            r.dt_empirical = empirical_limit(*scene, r.scheme, r.dt_peng, c);
-            if (probe.linearisable_at_rest()) {
-                r.dt_amplification = amplification_limit(*scene, r.scheme, r.dt_peng, c);
-                r.unstable_at_every_dt = unstable_at_every_dt(*scene, r.scheme, 0.01 * r.dt_peng);
-            } else {
-                r.dt_amplification = NAN;
-            }
+    parallel_for(rows.size(), jobs, [&](std::size_t i) {
+        StabilityRow& r = rows[i];
+        const auto scene = make_scene(r.scene, overrides(r));
+        const auto& probe = dynamic_cast<const StabilityProbe&>(*scene);
+        const StabilityCriterion c{stability_horizon_periods * probe.period(), stability_growth};
+        r.dt_peng = probe.predicted_limit();
+        const auto* pair = dynamic_cast<const ContactPairScene*>(scene.get());
+        r.dt_verlet_normal = pair ? pair->verlet_normal_limit() : NAN;
+        r.dt_empirical = empirical_limit(*scene, r.scheme, r.dt_peng, c);
+        if (probe.linearisable_at_rest()) {
+            r.dt_amplification = amplification_limit(*scene, r.scheme, r.dt_peng, c);
+            r.unstable_at_every_dt = unstable_at_every_dt(*scene, r.scheme, 0.01 * r.dt_peng);
+        } else {
+            r.dt_amplification = NAN;
         }
-    };
-    std::vector<std::thread> threads;
-    for (int j = 1; j < std::max(1, jobs); ++j) threads.emplace_back(worker);
-    worker();
-    for (auto& t : threads) t.join();
+    });
     return rows;
 }
 

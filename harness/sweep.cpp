@@ -1,10 +1,9 @@
 #include "harness/sweep.hpp"
 
+#include "harness/parallel.hpp"
+
 #include <algorithm>
-#include <atomic>
-#include <exception>
 #include <mutex>
-#include <thread>
 
 namespace rotbench {
 
@@ -39,27 +38,14 @@ std::vector<RunSpec> plan_sweep(const SweepSpec& spec) {
 std::vector<RunResult> run_sweep(const std::vector<RunSpec>& plan, const RunOptions& options,
                                  const std::function<void(const RunResult&)>& on_done, int jobs) {
     std::vector<RunResult> results(plan.size());
-    std::atomic<std::size_t> next{0};
     std::mutex done_mutex;
-    std::exception_ptr error;  // an InputError found while running (none expected after plan_sweep)
-    auto worker = [&] {
-        for (std::size_t i = next++; i < plan.size(); i = next++) {
-            try {
-                results[i] = run_one(plan[i], options);
-            } catch (...) {
-                std::lock_guard lock(done_mutex);
-                if (!error) error = std::current_exception();
-                continue;
-            }
-            std::lock_guard lock(done_mutex);
-            if (on_done) on_done(results[i]);
-        }
-    };
-    std::vector<std::thread> threads;
-    for (int j = 1; j < std::max(1, jobs); ++j) threads.emplace_back(worker);
-    worker();
-    for (auto& t : threads) t.join();
-    if (error) std::rethrow_exception(error);
+    // run_one records a failing scheme; what it throws is bad input (none expected after
+    // plan_sweep), rethrown once every run has finished.
+    parallel_for(plan.size(), jobs, [&](std::size_t i) {
+        results[i] = run_one(plan[i], options);
+        std::lock_guard lock(done_mutex);
+        if (on_done) on_done(results[i]);
+    });
     return results;
 }
 
