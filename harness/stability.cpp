@@ -195,14 +195,23 @@ double amplification_limit(const Scene& scene, const std::string& scheme, double
                            double tolerance) {
     return boundary(
         [&](double dt) {
-            const double rho = spectral_radius(scene, step_jacobian(scene, scheme, dt));
+            double rho = 0;
+            try {
+                rho = spectral_radius(scene, step_jacobian(scene, scheme, dt));
+            } catch (const std::exception&) {
+                return true;  // as in unstable_at: a scheme that throws has failed at this dt
+            }
             return !std::isfinite(rho) || 2.0 * (c.horizon / dt) * std::log(rho) >= std::log(c.growth);
         },
         dt_guess, tolerance);
 }
 
 bool unstable_at_every_dt(const Scene& scene, const std::string& scheme, double dt_small) {
-    return spectral_radius(scene, step_jacobian(scene, scheme, dt_small)) > 1.0 + 1e-6;
+    try {
+        return spectral_radius(scene, step_jacobian(scene, scheme, dt_small)) > 1.0 + 1e-6;
+    } catch (const std::exception&) {
+        return true;
+    }
 }
 
 }  // namespace rotbench

@@ -4,8 +4,10 @@
 #include "harness/scenes/contact_pair.hpp"
 #include "harness/stability.hpp"
 #include "harness/stability_study.hpp"
+#include "schemes/scheme.hpp"
 
 #include <catch2/catch.hpp>
+#include <stdexcept>
 
 using namespace rotbench;
 
@@ -100,4 +102,23 @@ TEST_CASE("rotation-dominant (fast_spin, eq. 57): the limits scale as 1/w_max, a
     CHECK(find("zvw", 100.0).dt_empirical < 0.25 * find("zvw", 100.0).dt_peng);           // 0.18x: not safe
     CHECK(find("zvw_corrected", 100.0).dt_empirical < 0.25 * find("zvw_corrected", 100.0).dt_peng);
     CHECK(std::isinf(find("munjiza_rk4", 100.0).dt_empirical));  // H exact, exponential map: no limit found
+}
+
+namespace {
+struct ThrowsInPredict {  // test only: a scheme with a bug
+    struct Memory {};
+    static void start(const RigidBody&, Memory&) {}
+    static void predict(RigidBody&, Memory&, double) { throw std::runtime_error("scheme bug"); }
+    static void correct(RigidBody&, Memory&, double) {}
+};
+const RegisterScheme<ThrowsInPredict> throwing("test_stability_throws", "test only: throws", "tests");
+}  // namespace
+
+TEST_CASE("a scheme that throws is unstable at every dt in both analyses, and the study goes on") {
+    const auto rows = stability_study({"sphere_pair"}, {"test_stability_throws", "direct"}, {0.0}, {}, 2);
+    REQUIRE(rows.size() == 2);
+    CHECK(rows[0].dt_empirical == 0.0);
+    CHECK(rows[0].dt_amplification == 0.0);
+    CHECK(rows[0].unstable_at_every_dt);
+    CHECK(rows[1].dt_empirical > 0.0);
 }
