@@ -19,8 +19,8 @@ double parse_finite(const std::string& text, const std::string& option);
 std::vector<double> parse_positive_list(const std::string& text, const std::string& option);
 
 // A comma list of registered ids (valid ones listed on error); duplicates are rejected.
-template <class Product>
-std::vector<std::string> parse_id_list(const std::string& text, const Registry<Product>& registry,
+template <class Product, class Extra>
+std::vector<std::string> parse_id_list(const std::string& text, const Registry<Product, Extra>& registry,
                                        const std::string& kind);
 
 std::vector<std::string> split_commas(const std::string& text);

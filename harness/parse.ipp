@@ -3,8 +3,8 @@
 
 namespace rotbench {
 
-template <class Product>
-std::vector<std::string> parse_id_list(const std::string& text, const Registry<Product>& registry,
+template <class Product, class Extra>
+std::vector<std::string> parse_id_list(const std::string& text, const Registry<Product, Extra>& registry,
                                        const std::string& kind) {
     std::vector<std::string> ids;
     for (const std::string& id : split_commas(text)) {

@@ -7,6 +7,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <variant>
 #include <vector>
 
 namespace rotbench {
@@ -19,7 +20,8 @@ struct InputError : std::runtime_error {
 
 std::string join(const std::vector<std::string>& items, const std::string& sep);
 
-template <class Product>
+// `Extra`: what else an entry states about itself (a scheme's claims, schemes/scheme.hpp).
+template <class Product, class Extra = std::monostate>
 class Registry {
 public:
     struct Entry {
@@ -28,6 +30,7 @@ public:
         std::string source;    // citation: paper and equations
         std::string notes;     // choices made where the source leaves one open (for the report)
         std::function<std::unique_ptr<Product>()> make;
+        Extra extra{};
     };
 
     static Registry& instance() {

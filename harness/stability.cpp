@@ -14,7 +14,6 @@ namespace {
 
 constexpr int block = 18;  // x v theta w F T
 
-Quat exp_map(const Vec3& theta) { return rotation_increment(theta, 1.0); }
 Vec3 log_map(const Quat& q) {  // rotation vector of a unit quaternion, angle in [0, pi]
     const Quat u = q.w() < 0 ? Quat(-q.coeffs()) : q;
     const double s = u.vec().norm();
@@ -106,7 +105,7 @@ struct StepMap {
         for (std::size_t i = 0; i < b.size(); ++i) {
             b.position.set(i, s.segment<3>(block * i + 0));
             b.velocity.set(i, s.segment<3>(block * i + 3));
-            b.orientation.set(i, exp_map(s.segment<3>(block * i + 6)) * reference[i]);
+            b.orientation.set(i, rotation_from_vector(s.segment<3>(block * i + 6)) * reference[i]);
             b.omega.set(i, s.segment<3>(block * i + 9));
             b.force.set(i, s.segment<3>(block * i + 12));
             b.torque.set(i, s.segment<3>(block * i + 15));

@@ -19,13 +19,25 @@ inline Vec3 rotate(const Quat& q, const Vec3& v) {
 inline Vec3 to_world(const Quat& q, const Vec3& v_body) { return rotate(q, v_body); }
 inline Vec3 to_body(const Quat& q, const Vec3& v_world) { return rotate(q.conjugate(), v_world); }
 
-// Incremental rotation q(omega, dt) for a constant angular velocity over dt (seed eq. 17).
-// sin(x)/x is evaluated by its series near zero so that tiny or zero rates stay exact.
-inline Quat rotation_increment(const Vec3& omega, double dt) {
-    const double half = 0.5 * omega.norm() * dt;
-    const double sinc = std::abs(half) < 1e-4 ? 1.0 - half * half / 6.0 : std::sin(half) / half;
-    const Vec3 v = (0.5 * dt * sinc) * omega;
+// The rotation by the angle |theta| about theta: the exponential map, exp(theta/2) as a
+// quaternion. sin(x)/x is evaluated by its series near zero so that tiny or zero angles
+// stay exact.
+inline Quat rotation_from_vector(const Vec3& theta) {
+    const double half = 0.5 * theta.norm();
+    const double sinc = half < 1e-4 ? 1.0 - half * half / 6.0 : std::sin(half) / half;
+    const Vec3 v = (0.5 * sinc) * theta;
     return Quat(std::cos(half), v.x(), v.y(), v.z());
+}
+
+// Incremental rotation q(omega, dt) for a constant angular velocity over dt (seed eq. 17).
+inline Quat rotation_increment(const Vec3& omega, double dt) { return rotation_from_vector(dt * omega); }
+
+// The Cayley map cay(x) = (1 - x^/2)^-1 (1 + x^/2): the rotation by 2 atan(|x|/2) about x,
+// a rational stand-in for the exponential map that agrees with it to O(|x|^3).
+inline Quat cayley_rotation(const Vec3& x) {
+    const double scale = 1.0 / std::sqrt(1.0 + 0.25 * x.squaredNorm());
+    const Vec3 v = (0.5 * scale) * x;
+    return Quat(scale, v.x(), v.y(), v.z());
 }
 
 // Angular acceleration in the body frame from Euler's equations (seed eqs. 6, 34):

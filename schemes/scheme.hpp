@@ -29,7 +29,20 @@ public:
     virtual void correct(Bodies& bodies, double dt) = 0;
 };
 
-using SchemeRegistry = Registry<RotationScheme>;
+// What a scheme claims of itself; tests and the report check the claims against the runs.
+struct OrderClaim {
+    int order = 0;       // of the angular-velocity error; 0: no claim
+    std::string reason;  // the argument, with the equations it rests on
+};
+struct SchemeClaims {
+    OrderClaim without_torque;  // torque-free scenes
+    OrderClaim with_torque;     // an orientation-dependent torque
+    bool exact_without_torque = false;  // the torque-free motion is exact (round-off only)
+    bool conserves_momentum = false;    // world angular momentum kept to round-off without torque
+    bool sound = true;                  // false: a deliberately wrong control (no_gyro)
+};
+
+using SchemeRegistry = Registry<RotationScheme, SchemeClaims>;
 
 // The state one scheme kernel sees for one body: read from the arrays, written back.
 struct RigidBody {
@@ -81,9 +94,10 @@ private:
 // Registers a kernel under an id at static-initialisation time.
 template <class Kernel>
 struct RegisterScheme {
-    RegisterScheme(std::string id, std::string summary, std::string source, std::string notes = "") {
+    RegisterScheme(std::string id, std::string summary, std::string source, std::string notes = "",
+                   SchemeClaims claims = {}) {
         SchemeRegistry::instance().add({std::move(id), std::move(summary), std::move(source), std::move(notes),
-                                        [] { return std::make_unique<BatchedScheme<Kernel>>(); }});
+                                        [] { return std::make_unique<BatchedScheme<Kernel>>(); }, std::move(claims)});
     }
 };
 

@@ -68,33 +68,3 @@ TEST_CASE("order fit: fewer than 3 usable points is insufficient, not a number")
     CHECK_FALSE(fit_order(ladder(0.1, 2, [](double dt) { return dt; })).sufficient);
     CHECK_FALSE(fit_order({{0.1, 1e-3}, {0.05, NAN}, {0.025, 1e-20}, {0.0125, 2e-4}}).sufficient);
 }
-
-#include "harness/run.hpp"
-#include "reports/expected_orders.hpp"
-#include "reports/orders.hpp"
-
-TEST_CASE("each seed scheme shows the order the theory gives it (reports/expected_orders.hpp)") {
-    struct Case {
-        std::string scene;
-        bool with_torque;
-        double dt0;
-    };
-    // Halving ladders of 5 steps from dt0, inside each scene's asymptotic range.
-    for (const Case& c : {Case{"cylinder_free", false, 2e-4}, Case{"asymmetric_free", false, 1e-2},
-                          Case{"dipole_top", true, 1e-2}}) {
-        for (const auto& expected : expected_orders()) {
-            if (expected.with_torque != c.with_torque) continue;
-            std::vector<RunResult> runs;
-            for (int k = 0; k < 5; ++k)
-                runs.push_back(run_one({c.scene, expected.scheme, c.dt0 * std::pow(0.5, k), 0.0}, {.measure_time = false}));
-            for (const auto& row : observed_orders(runs)) {
-                if (row.metric != "omega_err_max") continue;
-                INFO(c.scene << " / " << expected.scheme << ": observed " << row.fit.order << " [" << row.fit.order_lo
-                             << ", " << row.fit.order_hi << "], expected " << expected.order);
-                REQUIRE(row.fit.sufficient);
-                // 0.1: what is left of the pre-asymptotic terms on these ladders.
-                CHECK(row.fit.order == Approx(expected.order).margin(0.1));
-            }
-        }
-    }
-}

@@ -111,7 +111,7 @@ struct ThrowsInPredict {  // test only: a scheme with a bug
     static void predict(RigidBody&, Memory&, double) { throw std::runtime_error("scheme bug"); }
     static void correct(RigidBody&, Memory&, double) {}
 };
-const RegisterScheme<ThrowsInPredict> throwing("test_stability_throws", "test only: throws", "tests");
+const RegisterScheme<ThrowsInPredict> throwing("test_stability_throws", "test only: throws", "tests", "", {.sound = false});
 }  // namespace
 
 TEST_CASE("a scheme that throws is unstable at every dt in both analyses, and the study goes on") {

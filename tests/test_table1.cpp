@@ -43,7 +43,7 @@ struct PublishedSmallAngleIncrement {
 };
 const RegisterScheme<MunjizaRk4<PublishedSmallAngleIncrement>> published_rk4(
     "test_munjiza_rk4_published_small_angle", "test only: munjiza_rk4 with the publication's small-angle q(w, dt)",
-    "tests/test_table1.cpp");
+    "tests/test_table1.cpp", "", {.sound = false});
 
 }  // namespace
 

@@ -1,0 +1,40 @@
+// `richardson`: the orientation update of LAMMPS fix rigid (MathExtra::richardson) and
+// LIGGGHTS multisphere, from Kamberaj, Low & Neal, J. Chem. Phys. 122:224114 (2005).
+//
+// After the half kick of L, dq/dt = 1/2 w q is advanced over dt by one explicit Euler step
+// and by two half steps (w recomputed from L at the middle), each normalised; the
+// Richardson combination 2 q_two_halves - q_one_step cancels the O(dt^2) local error of
+// Euler, and the result is normalised again.
+#include "schemes/kick_drift_kick.hpp"
+
+namespace rotbench {
+namespace {
+
+// q + h (1/2 w q), normalised: one explicit Euler step of dq/dt = 1/2 w q.
+Quat euler_step(const Quat& q, const Vec3& omega, double h) {
+    const Quat rate = Quat(0.0, omega.x(), omega.y(), omega.z()) * q;
+    return Quat(q.coeffs() + 0.5 * h * rate.coeffs()).normalized();
+}
+
+struct RichardsonRotation {
+    static Quat rotate(const RigidBody& start, const Vec3& momentum, double dt) {
+        const Quat& q = start.q;
+        const Vec3 omega = omega_from_momentum(q, start.inertia, momentum);
+        const Quat one_step = euler_step(q, omega, dt);
+        const Quat half = euler_step(q, omega, 0.5 * dt);
+        const Quat two_halves = euler_step(half, omega_from_momentum(half, start.inertia, momentum), 0.5 * dt);
+        return Quat(2.0 * two_halves.coeffs() - one_step.coeffs()).normalized();
+    }
+};
+
+const RegisterScheme<KickDriftKick<RichardsonRotation>> registration(
+    "richardson", "Richardson-extrapolated quaternion update (LAMMPS fix rigid, LIGGGHTS multisphere)",
+    "Kamberaj, Low & Neal, J. Chem. Phys. 122:224114 (2005); LAMMPS MathExtra::richardson",
+    "Kick of L with T^n, then q advanced by 2 q(two Euler half steps) - q(one Euler step), w recomputed from L at "
+    "the half step, each normalised; kick with T^{n+1}. Not symplectic and not time-reversible.",
+    {.without_torque = {2, "the extrapolation cancels the O(dt^2) local error of the Euler steps: second order"},
+     .with_torque = {2, "trapezoidal kicks around a second-order rotation: second order"},
+     .conserves_momentum = true});
+
+}  // namespace
+}  // namespace rotbench
