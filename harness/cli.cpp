@@ -2,9 +2,12 @@
 
 #include "harness/config.hpp"
 #include "harness/export.hpp"
+#include "harness/gate.hpp"
 #include "harness/parse.hpp"
+#include "harness/plugin.hpp"
 #include "harness/stability_study.hpp"
 #include "harness/sweep.hpp"
+#include "reports/gate_report.hpp"
 #include "reports/markdown_report.hpp"
 #include "reports/orders.hpp"
 #include "reports/output_files.hpp"
@@ -131,6 +134,9 @@ void write_export(const std::string& out, const std::string& csv, std::ostream& 
 int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
     CLI::App app{"rotbench: verification and convergence harness for rigid-body rotation schemes"};
     app.require_subcommand(1);
+    app.fallthrough();  // --plugin may follow the command
+    std::vector<std::string> plugins;
+    app.add_option("--plugin", plugins, "load schemes from a plug-in built with rotbench_add_scheme() (repeatable)");
     auto* list_cmd = app.add_subcommand("list", "list the registered schemes and scenes");
     auto* run_cmd = app.add_subcommand("run", "run schemes on scenes and write results.csv and report.md");
     RunOptionsText o;
@@ -178,16 +184,53 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
     stability_cmd->add_flag("--overwrite", stab_overwrite, "replace results already in --out");
     std::string params_of;
     list_cmd->add_option("--params", params_of, "list the parameters of this scene");
+    auto* gate_cmd = app.add_subcommand("gate", "run the checks of a gate file; exit 1 if any fails");
+    std::string gate_file, gate_junit_file, gate_out;
+    int gate_jobs = o.jobs;
+    bool gate_overwrite = false;
+    gate_cmd->add_option("FILE", gate_file, "gate file (TOML, [[check]] tables)")->required();
+    gate_cmd->add_option("--junit", gate_junit_file, "write JUnit XML here (one test case per check and scheme)");
+    gate_cmd->add_option("--out", gate_out, "also write gate.csv and results.csv of the runs here");
+    gate_cmd->add_option("--jobs", gate_jobs, "runs in parallel (results do not depend on it)")->check(CLI::PositiveNumber);
+    gate_cmd->add_flag("--overwrite", gate_overwrite, "replace a gate.csv already in --out");
 
     std::string command_line = "rotbench";
     for (int i = 1; i < argc; ++i) command_line += std::string(" ") + argv[i];
     try {
         const std::vector<std::string> commands = {list_cmd->get_name(), run_cmd->get_name(), reference_cmd->get_name(),
                                                    trajectory_cmd->get_name(), report_cmd->get_name(),
-                                                   stability_cmd->get_name()};
+                                                   stability_cmd->get_name(), gate_cmd->get_name()};
         if (argc > 1 && argv[1][0] != '-' && std::find(commands.begin(), commands.end(), argv[1]) == commands.end())
             throw InputError(std::string("unknown command '") + argv[1] + "'; valid commands: " + join(commands, ", "));
         app.parse(argc, argv);
+        for (const auto& plugin : plugins) {
+            const auto ids = load_plugin(plugin);
+            err << "rotbench: loaded " << join(ids, ", ") << " from " << plugin << "\n";
+        }
+        if (*gate_cmd) {
+            const auto checks = load_gate(gate_file);
+            std::filesystem::path dir;
+            if (!gate_out.empty()) {
+                dir = gate_out;
+                if (std::filesystem::exists(dir / "gate.csv") && !gate_overwrite)
+                    throw InputError("--out " + gate_out + " already holds gate.csv; pass --overwrite or choose another directory");
+                std::filesystem::create_directories(dir);
+            }
+            if (!gate_junit_file.empty()) {
+                const std::filesystem::path parent = std::filesystem::path(gate_junit_file).parent_path();
+                if (!parent.empty() && !std::filesystem::is_directory(parent))
+                    throw InputError("--junit " + gate_junit_file + ": the directory " + parent.string() + " does not exist");
+            }
+            const GateResult result = run_gate(checks, gate_jobs);
+            out << gate_summary(checks, result);
+            if (!gate_junit_file.empty()) write_file_atomically(gate_junit_file, gate_junit(checks, result));
+            if (!dir.empty()) {
+                write_file_atomically(dir / "gate.csv", gate_csv(checks, result));
+                write_file_atomically(dir / "results.csv", results_csv(result.runs));
+            }
+            const bool passed = std::all_of(result.outcomes.begin(), result.outcomes.end(), [](const GateOutcome& g) { return g.passed; });
+            return passed ? 0 : 1;
+        }
         if (*list_cmd) {
             if (params_of.empty()) list(out);
             else list_params(params_of, out);

@@ -1,0 +1,18 @@
+// `--plugin path.so`: schemes built out of tree (cmake/rotbench_plugin.cmake, README "Add
+// your scheme"). Loading checks the ABI string (schemes/plugin_abi.hpp) before anything of
+// the plug-in is called, then adds its schemes to the registry; a missing file, a library
+// that is not a rotbench plug-in, an ABI mismatch, a plug-in without schemes or one whose
+// ids clash with registered ones are InputErrors. The library stays loaded for the life of
+// the process. (Its static initialisers run inside dlopen, before the ABI check; they only
+// touch the plug-in's own registry.)
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace rotbench {
+
+// Returns the ids of the schemes it added.
+std::vector<std::string> load_plugin(const std::string& path);
+
+}  // namespace rotbench
