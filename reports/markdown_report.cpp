@@ -6,6 +6,7 @@
 #include "reports/energy_series.hpp"
 #include "reports/expected_orders.hpp"
 #include "reports/orders.hpp"
+#include "reports/ranking.hpp"
 #include "reports/seed_table1.hpp"
 
 #include <algorithm>
@@ -245,14 +246,20 @@ void table1_section(std::string& md, const std::vector<RunResult>& results) {
 }
 
 void schemes_section(std::string& md, const std::vector<RunResult>& results) {
-    md += "## Schemes, the readings of the seed's equations, and their expected orders\n\n";
+    md += "## Schemes: sources, readings, and what each claims\n\n";
     for (const auto& id : unique_in_order(results, &RunSpec::scheme)) {
+        if (!SchemeRegistry::instance().contains(id)) {
+            md += fmt::format("- **`{}`**: not registered in this rotbench (a plug-in? pass --plugin to describe it).\n", id);
+            continue;
+        }
         const auto& s = SchemeRegistry::instance().at(id, "scheme");
         md += fmt::format("- **`{}`**: {}. Source: {}.", id, s.summary, s.source);
         if (!s.notes.empty()) md += " Reading: " + s.notes;
         for (const auto& e : expected_orders())
             if (e.scheme == id)
                 md += fmt::format(" Expected order {} {}: {}.", e.order, e.with_torque ? "with torque" : "without torque", e.reason);
+        if (s.extra.exact_without_torque) md += " Exact without torque (round-off only).";
+        if (s.extra.conserves_momentum) md += " Keeps the world angular momentum to round-off without torque.";
         md += "\n";
     }
     md += "\n";
@@ -275,6 +282,7 @@ std::string markdown_report(const std::vector<RunResult>& results, const std::st
                       results.size(), unstable);
     const auto orders = observed_orders(results);
     summary_section(md, results, orders);
+    md += ranking_section(results, orders);
     for (const auto& scene : unique_in_order(results, &RunSpec::scene)) scene_section(md, scene, results, orders, dir);
     table1_section(md, results);
     md += energy_series_section(results, dir);
@@ -286,7 +294,7 @@ std::string markdown_report(const std::vector<RunResult>& results, const std::st
           "between q and q_ref.\n"
           "- `energy_drift_max`: max |E - E0|/|E0|; `energy_drift_rate`: slope (1/s) of the least-squares line "
           "through its running maximum, the secular drift. `momentum_drift_max`: max |L - L0|/|L0| (torque-free "
-          "scenes). `quat_norm_err_max`: max ||q| - 1| (no scheme renormalises q).\n"
+          "scenes). `quat_norm_err_max`: max ||q| - 1| (round-off only in the schemes that normalise q or keep it unit).\n"
           "- `cpu_seconds` (median), `cpu_seconds_min`, `cpu_seconds_max` over `timing_repeats` runs after a "
           "warm-up (a run longer than 0.5 s is timed once), on the per-thread CPU clock.\n"
           "- `unstable`: 1 when the state became NaN/Inf, the energy error of a conservative scene passed 1e6 "
