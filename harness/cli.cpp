@@ -290,6 +290,9 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
     } catch (const InputError& e) {
         err << "rotbench: " << e.what() << "\n";
         return 2;
+    } catch (const std::filesystem::filesystem_error& e) {  // an output path that is not a writable directory
+        err << "rotbench: " << e.what() << "\n";
+        return 2;
     }
 }
 

@@ -76,7 +76,7 @@ std::string spectral_radius_plots(const std::vector<std::string>& scenes, const 
             "names = '{1}'\nfile = 'spectral_radius_{0}.dat'\n"
             "set arrow from {2},graph 0 to {2},graph 1 nohead dt 2 lc 'black'\n"
             "set label 'Peng' at {2},graph 0.95 offset 0.5,0\n"
-            "plot for [i=1:words(names)] file index (i-1) using 1:($2-1) with linespoints pt 7 ps 0.5 title word(names, i)\n",
+            "plot for [i=1:words(names)] file index (i-1) using 1:($2-1) with linespoints pt (7 - 2*((i-1)/8)) dt 1+(i-1)/8 ps 0.5 title word(names, i)\n",
             id, names, format_number(probe->predicted_limit()));
         if (draw_with_gnuplot(dir / "plots" / fmt::format("spectral_radius_{}.gp", id), script))
             md += fmt::format("![spectral radius, {0}](plots/spectral_radius_{0}.svg)\n\n", id);
@@ -152,7 +152,7 @@ std::string stability_section(const std::vector<StabilityRow>& rows, const std::
             "set terminal svg size 800,450 dynamic noenhanced font 'sans,12'\nset output 'stability_{0}.svg'\n"
             "set title '{0}: stability limit against damping ratio'\nset xlabel 'zeta'\nset ylabel 'dt (s)'\n"
             "set logscale y\nset grid\nset key outside right\nnames = '{1}'\nfile = 'stability_{0}.dat'\n"
-            "plot for [i=1:words(names)] file index (i-1) using 1:2 with linespoints pt 7 title word(names, i), "
+            "plot for [i=1:words(names)] file index (i-1) using 1:2 with linespoints pt (7 - 2*((i-1)/8)) dt 1+(i-1)/8 title word(names, i), "
             "file index 0 using 1:4 with lines dt 2 lc 'black' title 'Peng (eq. 46)'\n",
             scene, names);
         if (draw_with_gnuplot(dir / "plots" / fmt::format("stability_{}.gp", scene), script))

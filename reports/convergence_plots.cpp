@@ -61,7 +61,7 @@ std::string convergence_plots(const std::string& scene, const std::vector<const 
         "e0 = {2}; d0 = {3}; lo = {4}; hi = {5}\n"
         "slope(x, p) = (x >= lo && x <= hi) ? e0*(x/d0)**p : 1/0  # drawn over the data's dt only\n"
         "set xrange [lo/1.5:hi*1.5]\nset yrange [{6}/3:{7}*3]\nset samples 200\n"
-        "plot for [i=1:words(names)] file index (i-1) using 1:2 with linespoints pt 7 ps 0.6 title word(names, i), \\\n"
+        "plot for [i=1:words(names)] file index (i-1) using 1:2 with linespoints pt (7 - 2*((i-1)/8)) dt 1+(i-1)/8 ps 0.6 title word(names, i), \\\n"
         "     slope(x, 1) dt 2 lc 'gray50' title 'slope 1', slope(x, 2) dt 3 lc 'gray30' title 'slope 2', \\\n"
         "     slope(x, 4) dt 4 lc 'gray10' title 'slope 4'\n",
         scene, metric, format_number(e_mid), format_number(dt_mid), format_number(lo), format_number(hi),
@@ -69,9 +69,9 @@ std::string convergence_plots(const std::string& scene, const std::vector<const 
     const std::string work = head + fmt::format(
         "set output 'work_precision_{0}.svg'\nset multiplot layout 1,2 title '{0}: {1} against cost'\n"
         "set xlabel 'CPU time (s)'\nset ylabel '{1}'\nunset key\n"
-        "plot for [i=1:words(names)] file index (i-1) using 3:2 with linespoints pt 7 ps 0.6 title word(names, i)\n"
+        "plot for [i=1:words(names)] file index (i-1) using 3:2 with linespoints pt (7 - 2*((i-1)/8)) dt 1+(i-1)/8 ps 0.6 title word(names, i)\n"
         "set xlabel 'force evaluations'\nset key outside right\n"
-        "plot for [i=1:words(names)] file index (i-1) using 4:2 with linespoints pt 7 ps 0.6 title word(names, i)\n"
+        "plot for [i=1:words(names)] file index (i-1) using 4:2 with linespoints pt (7 - 2*((i-1)/8)) dt 1+(i-1)/8 ps 0.6 title word(names, i)\n"
         "unset multiplot\n",
         scene, metric);
     const bool drawn = draw_with_gnuplot(dir / "plots" / fmt::format("convergence_{}.gp", scene), conv) &&

@@ -40,8 +40,8 @@ std::string plot_script(const std::string& scene, double dt, const std::vector<c
         "plot ",
         scene, dt_tag(dt), scene, dt);
     for (std::size_t i = 0; i < runs.size(); ++i)
-        s += fmt::format("{}'../series/{}' using 1:2 with lines lw 1.5 title '{}'", i ? ", \\\n     " : "",
-                         series_file(*runs[i]), runs[i]->spec.scheme);
+        s += fmt::format("{}'../series/{}' using 1:2 with lines lw 1.5 dt {} title '{}'", i ? ", \\\n     " : "",
+                         series_file(*runs[i]), i / 8 + 1, runs[i]->spec.scheme);  // 8 colours, then dashes
     return s + "\n";
 }
 

@@ -260,6 +260,7 @@ void schemes_section(std::string& md, const std::vector<RunResult>& results) {
                 md += fmt::format(" Expected order {} {}: {}.", e.order, e.with_torque ? "with torque" : "without torque", e.reason);
         if (s.extra.exact_without_torque) md += " Exact without torque (round-off only).";
         if (s.extra.conserves_momentum) md += " Keeps the world angular momentum to round-off without torque.";
+        if (s.extra.bounded_energy) md += " No secular energy drift (symplectic or time-reversible).";
         md += "\n";
     }
     md += "\n";

@@ -54,7 +54,8 @@ const RegisterScheme<KickDriftKick<CayleyRotation>> registration(
     "with T^{n+1}. Symplectic and time-reversible; |q| = 1 kept. A step where Newton fails is a failed run.",
     {.without_torque = {2, "a variational integrator with a symmetric discrete Lagrangian: second order"},
      .with_torque = {2, "trapezoidal kicks around a second-order rotation: second order"},
-     .conserves_momentum = true});
+     .conserves_momentum = true,
+     .bounded_energy = true});
 
 }  // namespace
 }  // namespace rotbench

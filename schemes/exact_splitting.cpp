@@ -26,7 +26,8 @@ const RegisterScheme<KickDriftKick<ExactFreeRotation>> registration(
     "against Odeint), kick with T^{n+1}. Exact without torque; symplectic Strang splitting with it.",
     {.with_torque = {2, "Strang splitting of the exact free flow and the torque kicks: second order"},
      .exact_without_torque = true,
-     .conserves_momentum = true});
+     .conserves_momentum = true,
+     .bounded_energy = true});
 
 }  // namespace
 }  // namespace rotbench

@@ -49,7 +49,8 @@ const RegisterScheme<KickDriftKick<NoSquishRotation>> registration(
     "momentum p; the two are the same map. Symplectic and time-reversible: no energy drift, |q| = 1 kept.",
     {.without_torque = {2, "a symmetric composition of exact flows (Strang splitting): second order"},
      .with_torque = {2, "symmetric kicks with T^n and T^{n+1} around a second-order free rotation: second order"},
-     .conserves_momentum = true});
+     .conserves_momentum = true,
+     .bounded_energy = true});
 
 }  // namespace
 }  // namespace rotbench

@@ -34,7 +34,8 @@ const RegisterScheme<KickDriftKick<OmelyanRotation>> registration(
     "iteration does not converge in 100 passes is recorded as a failed run.",
     {.without_torque = {2, "an implicit mid-point rule on q at constant L, time-reversible: second order"},
      .with_torque = {2, "trapezoidal kicks around a second-order rotation: second order"},
-     .conserves_momentum = true});
+     .conserves_momentum = true,
+     .bounded_energy = true});
 
 }  // namespace
 }  // namespace rotbench

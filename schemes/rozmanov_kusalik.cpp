@@ -28,7 +28,8 @@ const RegisterScheme<KickDriftKick<RozmanovKusalikRotation>> registration(
     "converge in 100 passes is recorded as a failed run.",
     {.without_torque = {2, "a time-reversible mid-point rotation at constant L: second order"},
      .with_torque = {2, "trapezoidal kicks around a second-order rotation: second order"},
-     .conserves_momentum = true});
+     .conserves_momentum = true,
+     .bounded_energy = true});
 
 }  // namespace
 }  // namespace rotbench

@@ -39,6 +39,7 @@ struct SchemeClaims {
     OrderClaim with_torque;     // an orientation-dependent torque
     bool exact_without_torque = false;  // the torque-free motion is exact (round-off only)
     bool conserves_momentum = false;    // world angular momentum kept to round-off without torque
+    bool bounded_energy = false;        // no secular energy drift in a conservative scene (symplectic or reversible)
     bool sound = true;                  // false: a deliberately wrong control (no_gyro)
 };
 

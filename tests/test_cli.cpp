@@ -115,3 +115,19 @@ TEST_CASE("rotbench stability writes stability.csv with the contract header, and
     CHECK(cli({"stability", "--scenes", "sphere_pair", "--schemes", "direct", "--zeta", "0", "--out", dir.string()}).status == 2);
     fs::remove_all(dir);
 }
+
+TEST_CASE("an output path that is a file, not a directory, is bad input (exit status 2), not a crash") {
+    const fs::path file = fresh_dir("out_is_a_file");
+    write(file, "not a directory\n");
+    for (const std::vector<std::string>& args :
+         {std::vector<std::string>{"run", "--scenes", "cylinder_free", "--schemes", "direct", "--dt", "1e-2", "--out", file.string()},
+          std::vector<std::string>{"stability", "--scenes", "sphere_pair", "--schemes", "direct", "--out", file.string()},
+          std::vector<std::string>{"gate", DEFAULT_GATE, "--out", file.string()}}) {
+        const Cli r = cli(args);
+        INFO(args[0] << " -> " << r.err);
+        CHECK(r.status == 2);
+        CHECK(one_line(r.err));
+    }
+    CHECK(read(file) == "not a directory\n");
+    fs::remove(file);
+}
