@@ -4,17 +4,17 @@ set format x '%g'
 set format y '%.0e'
 set grid
 set key outside right
-names = 'direct munjiza_rk4 zvw zvw_corrected'
+names = 'cayley direct exact_splitting fincham munjiza_rk4 no_gyro no_squish omelyan richardson rozmanov_kusalik spiral zvw zvw_corrected'
 file = 'runs_asymmetric_free.dat'
 set output 'convergence_asymmetric_free.svg'
 set title 'asymmetric_free: omega_err_max against dt'
 set xlabel 'dt (s)'
 set ylabel 'omega_err_max'
-e0 = 0.07124036644968743; d0 = 0.0125; lo = 0.00078125; hi = 0.1
+e0 = 0.000577207394289945; d0 = 0.0125; lo = 0.00078125; hi = 0.1
 slope(x, p) = (x >= lo && x <= hi) ? e0*(x/d0)**p : 1/0  # drawn over the data's dt only
 set xrange [lo/1.5:hi*1.5]
-set yrange [1.654347534713475e-07/3:0.2974242784085585*3]
+set yrange [2.0924464385910018e-14/3:0.7862810792662159*3]
 set samples 200
-plot for [i=1:words(names)] file index (i-1) using 1:2 with linespoints pt 7 ps 0.6 title word(names, i), \
+plot for [i=1:words(names)] file index (i-1) using 1:2 with linespoints pt (7 - 2*((i-1)/8)) dt 1+(i-1)/8 ps 0.6 title word(names, i), \
      slope(x, 1) dt 2 lc 'gray50' title 'slope 1', slope(x, 2) dt 3 lc 'gray30' title 'slope 2', \
      slope(x, 4) dt 4 lc 'gray10' title 'slope 4'

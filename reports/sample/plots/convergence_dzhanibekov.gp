@@ -4,17 +4,17 @@ set format x '%g'
 set format y '%.0e'
 set grid
 set key outside right
-names = 'direct munjiza_rk4 zvw zvw_corrected'
+names = 'cayley direct exact_splitting fincham munjiza_rk4 no_gyro no_squish omelyan richardson rozmanov_kusalik spiral zvw zvw_corrected'
 file = 'runs_dzhanibekov.dat'
 set output 'convergence_dzhanibekov.svg'
 set title 'dzhanibekov: omega_err_max against dt'
 set xlabel 'dt (s)'
 set ylabel 'omega_err_max'
-e0 = 1.1695429281468162; d0 = 0.0125; lo = 0.00078125; hi = 0.1
+e0 = 0.008760984848120521; d0 = 0.0125; lo = 0.00078125; hi = 0.1
 slope(x, p) = (x >= lo && x <= hi) ? e0*(x/d0)**p : 1/0  # drawn over the data's dt only
 set xrange [lo/1.5:hi*1.5]
-set yrange [2.5337003341697197e-06/3:2.1597009780133325*3]
+set yrange [2.265567969492702e-12/3:2.250570564805205*3]
 set samples 200
-plot for [i=1:words(names)] file index (i-1) using 1:2 with linespoints pt 7 ps 0.6 title word(names, i), \
+plot for [i=1:words(names)] file index (i-1) using 1:2 with linespoints pt (7 - 2*((i-1)/8)) dt 1+(i-1)/8 ps 0.6 title word(names, i), \
      slope(x, 1) dt 2 lc 'gray50' title 'slope 1', slope(x, 2) dt 3 lc 'gray30' title 'slope 2', \
      slope(x, 4) dt 4 lc 'gray10' title 'slope 4'

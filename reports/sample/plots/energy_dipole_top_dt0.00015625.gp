@@ -6,7 +6,16 @@ set xlabel 't (s)'
 set ylabel '(E - E0) / |E0|'
 set key outside right
 set grid
-plot '../series/energy_dipole_top_direct_dt0.00015625.csv' using 1:2 with lines lw 1.5 title 'direct', \
-     '../series/energy_dipole_top_munjiza_rk4_dt0.00015625.csv' using 1:2 with lines lw 1.5 title 'munjiza_rk4', \
-     '../series/energy_dipole_top_zvw_dt0.00015625.csv' using 1:2 with lines lw 1.5 title 'zvw', \
-     '../series/energy_dipole_top_zvw_corrected_dt0.00015625.csv' using 1:2 with lines lw 1.5 title 'zvw_corrected'
+plot '../series/energy_dipole_top_cayley_dt0.00015625.csv' using 1:2 with lines lw 1.5 dt 1 title 'cayley', \
+     '../series/energy_dipole_top_direct_dt0.00015625.csv' using 1:2 with lines lw 1.5 dt 1 title 'direct', \
+     '../series/energy_dipole_top_exact_splitting_dt0.00015625.csv' using 1:2 with lines lw 1.5 dt 1 title 'exact_splitting', \
+     '../series/energy_dipole_top_fincham_dt0.00015625.csv' using 1:2 with lines lw 1.5 dt 1 title 'fincham', \
+     '../series/energy_dipole_top_munjiza_rk4_dt0.00015625.csv' using 1:2 with lines lw 1.5 dt 1 title 'munjiza_rk4', \
+     '../series/energy_dipole_top_no_gyro_dt0.00015625.csv' using 1:2 with lines lw 1.5 dt 1 title 'no_gyro', \
+     '../series/energy_dipole_top_no_squish_dt0.00015625.csv' using 1:2 with lines lw 1.5 dt 1 title 'no_squish', \
+     '../series/energy_dipole_top_omelyan_dt0.00015625.csv' using 1:2 with lines lw 1.5 dt 1 title 'omelyan', \
+     '../series/energy_dipole_top_richardson_dt0.00015625.csv' using 1:2 with lines lw 1.5 dt 2 title 'richardson', \
+     '../series/energy_dipole_top_rozmanov_kusalik_dt0.00015625.csv' using 1:2 with lines lw 1.5 dt 2 title 'rozmanov_kusalik', \
+     '../series/energy_dipole_top_spiral_dt0.00015625.csv' using 1:2 with lines lw 1.5 dt 2 title 'spiral', \
+     '../series/energy_dipole_top_zvw_dt0.00015625.csv' using 1:2 with lines lw 1.5 dt 2 title 'zvw', \
+     '../series/energy_dipole_top_zvw_corrected_dt0.00015625.csv' using 1:2 with lines lw 1.5 dt 2 title 'zvw_corrected'

@@ -8,8 +8,8 @@ set format y '%.0e'
 set grid
 set key outside right
 set yrange [1e-10:*]
-names = 'direct munjiza_rk4 zvw zvw_corrected'
+names = 'cayley direct exact_splitting fincham munjiza_rk4 no_gyro no_squish omelyan richardson rozmanov_kusalik spiral zvw zvw_corrected'
 file = 'spectral_radius_sphere_pair.dat'
 set arrow from 0.00017297378423966018,graph 0 to 0.00017297378423966018,graph 1 nohead dt 2 lc 'black'
 set label 'Peng' at 0.00017297378423966018,graph 0.95 offset 0.5,0
-plot for [i=1:words(names)] file index (i-1) using 1:($2-1) with linespoints pt 7 ps 0.5 title word(names, i)
+plot for [i=1:words(names)] file index (i-1) using 1:($2-1) with linespoints pt (7 - 2*((i-1)/8)) dt 1+(i-1)/8 ps 0.5 title word(names, i)

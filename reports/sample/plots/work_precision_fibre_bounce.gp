@@ -4,15 +4,15 @@ set format x '%g'
 set format y '%.0e'
 set grid
 set key outside right
-names = 'direct munjiza_rk4 zvw zvw_corrected'
+names = 'cayley direct exact_splitting fincham munjiza_rk4 no_gyro no_squish omelyan richardson rozmanov_kusalik spiral zvw zvw_corrected'
 file = 'runs_fibre_bounce.dat'
 set output 'work_precision_fibre_bounce.svg'
 set multiplot layout 1,2 title 'fibre_bounce: energy_drift_max against cost'
 set xlabel 'CPU time (s)'
 set ylabel 'energy_drift_max'
 unset key
-plot for [i=1:words(names)] file index (i-1) using 3:2 with linespoints pt 7 ps 0.6 title word(names, i)
+plot for [i=1:words(names)] file index (i-1) using 3:2 with linespoints pt (7 - 2*((i-1)/8)) dt 1+(i-1)/8 ps 0.6 title word(names, i)
 set xlabel 'force evaluations'
 set key outside right
-plot for [i=1:words(names)] file index (i-1) using 4:2 with linespoints pt 7 ps 0.6 title word(names, i)
+plot for [i=1:words(names)] file index (i-1) using 4:2 with linespoints pt (7 - 2*((i-1)/8)) dt 1+(i-1)/8 ps 0.6 title word(names, i)
 unset multiplot
