@@ -10,17 +10,12 @@
 namespace rotbench {
 namespace {
 
-Quat quaternion_rate(const Quat& q, const Vec3& omega) {  // dq/dt = 1/2 w q
-    const Quat r = Quat(0.0, omega.x(), omega.y(), omega.z()) * q;
-    return Quat(0.5 * r.coeffs());
-}
-
 struct FinchamRotation {
     static Quat rotate(const RigidBody& start, const Vec3& momentum, double dt) {
         const Quat& q = start.q;
-        const Quat half(q.coeffs() + 0.5 * dt * quaternion_rate(q, start.omega).coeffs());
+        const Quat half(q.coeffs() + 0.5 * dt * quaternion_rate(q, start.omega));
         const Vec3 omega_half = omega_from_momentum(half, start.inertia, momentum);
-        return Quat(q.coeffs() + dt * quaternion_rate(half, omega_half).coeffs()).normalized();
+        return Quat(q.coeffs() + dt * quaternion_rate(half, omega_half)).normalized();
     }
 };
 

@@ -13,8 +13,7 @@ namespace {
 Quat omelyan_step(const Quat& q, const Vec3& omega, double dt) {
     const Vec3 u = 0.25 * dt * omega;
     const double u2 = u.squaredNorm();
-    const Quat turn = Quat(0.0, u.x(), u.y(), u.z()) * q;
-    return Quat(((1.0 - u2) * q.coeffs() + 2.0 * turn.coeffs()) / (1.0 + u2));
+    return Quat(((1.0 - u2) * q.coeffs() + dt * quaternion_rate(q, omega)) / (1.0 + u2));  // 2 u q = dt (1/2 w q)
 }
 
 struct OmelyanRotation {

@@ -40,6 +40,11 @@ inline Quat cayley_rotation(const Vec3& x) {
     return Quat(scale, v.x(), v.y(), v.z());
 }
 
+// dq/dt = 1/2 w q for the world angular velocity w (seed eq. 15), as a 4-vector.
+inline Eigen::Vector4d quaternion_rate(const Quat& q, const Vec3& omega) {
+    return 0.5 * (Quat(0.0, omega.x(), omega.y(), omega.z()) * q).coeffs();
+}
+
 // Angular acceleration in the body frame from Euler's equations (seed eqs. 6, 34):
 // I' dw'/dt = T' - w' x (I' w').
 inline Vec3 euler_acceleration(const Vec3& omega_body, const Vec3& torque_body, const Vec3& inertia) {

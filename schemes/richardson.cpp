@@ -12,8 +12,7 @@ namespace {
 
 // q + h (1/2 w q), normalised: one explicit Euler step of dq/dt = 1/2 w q.
 Quat euler_step(const Quat& q, const Vec3& omega, double h) {
-    const Quat rate = Quat(0.0, omega.x(), omega.y(), omega.z()) * q;
-    return Quat(q.coeffs() + 0.5 * h * rate.coeffs()).normalized();
+    return Quat(q.coeffs() + h * quaternion_rate(q, omega)).normalized();
 }
 
 struct RichardsonRotation {
