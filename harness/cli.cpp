@@ -5,8 +5,10 @@
 #include "harness/gate.hpp"
 #include "harness/parse.hpp"
 #include "harness/plugin.hpp"
+#include "harness/shard.hpp"
 #include "harness/stability_study.hpp"
 #include "harness/sweep.hpp"
+#include "reports/energy_series.hpp"
 #include "reports/gate_report.hpp"
 #include "reports/markdown_report.hpp"
 #include "reports/orders.hpp"
@@ -23,7 +25,7 @@ namespace rotbench {
 namespace {
 
 struct RunOptionsText {
-    std::string scenes, schemes, dts, t_end, config, out = "rotbench-out";
+    std::string scenes, schemes, dts, t_end, config, shard, out = "rotbench-out";
     std::vector<std::string> settings;
     int energy_series = 400;
     int jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
@@ -79,8 +81,30 @@ std::filesystem::path prepare_output(const std::string& dir, bool overwrite) {
     return path;
 }
 
+// results.csv, runs.csv, the orders and report.md: what `run` writes, and `merge` too.
+void write_outputs(const std::filesystem::path& dir, const std::vector<RunResult>& results, const std::string& command_line,
+                   std::ostream& out) {
+    write_file_atomically(dir / "results.csv", results_csv(results));
+    write_file_atomically(dir / "runs.csv", runs_csv(results));
+    const auto orders = observed_orders(results);
+    write_file_atomically(dir / "orders.csv", orders_csv(orders));
+    write_file_atomically(dir / "local_orders.csv", local_orders_csv(orders));
+    write_file_atomically(dir / "report.md", markdown_report(results, command_line, dir));
+    out << fmt::format("wrote {} and {}\n", (dir / "results.csv").string(), (dir / "report.md").string());
+}
+
 int run(const RunOptionsText& o, const std::string& command_line, std::ostream& out) {
-    const auto plan = plan_sweep(sweep_spec(o));  // every input checked before anything runs
+    auto plan = plan_sweep(sweep_spec(o));  // every input checked before anything runs
+    const std::size_t plan_size = plan.size();
+    const std::string id = plan_id(plan);
+    std::vector<std::size_t> indices;
+    const Shard shard = o.shard.empty() ? Shard{} : parse_shard(o.shard);
+    if (!o.shard.empty()) {
+        indices = shard_indices(plan_size, shard);
+        std::vector<RunSpec> slice;
+        for (std::size_t i : indices) slice.push_back(plan[i]);
+        plan = std::move(slice);
+    }
     const auto dir = prepare_output(o.out, o.overwrite);
 
     RunOptions options;
@@ -92,13 +116,17 @@ int run(const RunOptionsText& o, const std::string& command_line, std::ostream& 
                                r.failure.empty() ? "ok" : "FAILED: " + r.failure);
         },
         o.jobs);
+    if (o.shard.empty()) {
+        write_outputs(dir, results, command_line, out);
+        return 0;
+    }
+    // A slice: the runs and series for `merge`, no orders or report (they need every run).
     write_file_atomically(dir / "results.csv", results_csv(results));
     write_file_atomically(dir / "runs.csv", runs_csv(results));
-    const auto orders = observed_orders(results);
-    write_file_atomically(dir / "orders.csv", orders_csv(orders));
-    write_file_atomically(dir / "local_orders.csv", local_orders_csv(orders));
-    write_file_atomically(dir / "report.md", markdown_report(results, command_line, dir));
-    out << fmt::format("wrote {} and {}\n", (dir / "results.csv").string(), (dir / "report.md").string());
+    write_energy_series(results, dir);
+    write_file_atomically(dir / "shard.csv", shard_csv(id, shard.index, shard.count, results, indices, plan_size));
+    out << fmt::format("wrote shard {}/{} ({} of {} runs) to {}; combine the shards with rotbench merge\n", shard.index,
+                       shard.count, results.size(), plan_size, dir.string());
     return 0;
 }
 
@@ -149,6 +177,7 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
     run_cmd->add_option("--set", o.settings, "scene parameter, SCENE.KEY=VALUE (repeatable; VALUE may be a comma list)");
     run_cmd->add_option("--config", o.config, "TOML file with [run] selections and [SCENE] parameters");
     run_cmd->add_flag("--quick", o.quick, "each scene's short ladder of time steps (for CI)");
+    run_cmd->add_option("--shard", o.shard, "K/N: run only the K-th of N deterministic slices (combine with merge)");
     run_cmd->add_option("--jobs", o.jobs, "runs in parallel (results do not depend on it)")
         ->capture_default_str()
         ->check(CLI::PositiveNumber);
@@ -184,6 +213,13 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
     stability_cmd->add_flag("--overwrite", stab_overwrite, "replace results already in --out");
     std::string params_of;
     list_cmd->add_option("--params", params_of, "list the parameters of this scene");
+    auto* merge_cmd = app.add_subcommand("merge", "combine the outputs of run --shard K/N into one run's outputs");
+    std::vector<std::string> merge_dirs;
+    std::string merge_out;
+    bool merge_overwrite = false;
+    merge_cmd->add_option("DIRS", merge_dirs, "the shard directories, one per K")->required();
+    merge_cmd->add_option("--out", merge_out, "output directory")->required();
+    merge_cmd->add_flag("--overwrite", merge_overwrite, "replace results already in --out");
     auto* gate_cmd = app.add_subcommand("gate", "run the checks of a gate file; exit 1 if any fails");
     std::string gate_file, gate_junit_file, gate_out;
     int gate_jobs = o.jobs;
@@ -199,13 +235,20 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
     try {
         const std::vector<std::string> commands = {list_cmd->get_name(), run_cmd->get_name(), reference_cmd->get_name(),
                                                    trajectory_cmd->get_name(), report_cmd->get_name(),
-                                                   stability_cmd->get_name(), gate_cmd->get_name()};
+                                                   stability_cmd->get_name(), gate_cmd->get_name(),
+                                                   merge_cmd->get_name()};
         if (argc > 1 && argv[1][0] != '-' && std::find(commands.begin(), commands.end(), argv[1]) == commands.end())
             throw InputError(std::string("unknown command '") + argv[1] + "'; valid commands: " + join(commands, ", "));
         app.parse(argc, argv);
         for (const auto& plugin : plugins) {
             const auto ids = load_plugin(plugin);
             err << "rotbench: loaded " << join(ids, ", ") << " from " << plugin << "\n";
+        }
+        if (*merge_cmd) {
+            std::vector<std::filesystem::path> dirs(merge_dirs.begin(), merge_dirs.end());
+            const auto results = merge_shards(dirs);
+            write_outputs(prepare_output(merge_out, merge_overwrite), results, command_line, out);
+            return 0;
         }
         if (*gate_cmd) {
             const auto checks = load_gate(gate_file);

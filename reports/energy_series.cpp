@@ -146,4 +146,12 @@ std::string energy_series_section(const std::vector<RunResult>& results, const s
     return md;
 }
 
+void write_energy_series(const std::vector<RunResult>& results, const std::filesystem::path& dir) {
+    for (const auto& r : results)
+        if (!r.series.empty()) {
+            std::filesystem::create_directories(dir / "series");
+            write_series(r, dir / "series");
+        }
+}
+
 }  // namespace rotbench

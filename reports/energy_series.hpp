@@ -16,4 +16,7 @@ namespace rotbench {
 // (empty when no run recorded a series).
 std::string energy_series_section(const std::vector<RunResult>& results, const std::filesystem::path& dir);
 
+// DIR/series/*.csv for every run that recorded a series (a shard keeps them all for merge).
+void write_energy_series(const std::vector<RunResult>& results, const std::filesystem::path& dir);
+
 }  // namespace rotbench

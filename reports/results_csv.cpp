@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <tuple>
 
 namespace rotbench {
@@ -103,6 +104,65 @@ std::vector<RunResult> read_results(const std::filesystem::path& dir) {
         }
     }
     return results;
+}
+
+std::string shard_csv(const std::string& plan_id, int shard, int shards, const std::vector<RunResult>& results,
+                      const std::vector<std::size_t>& plan_indices, std::size_t plan_size) {
+    std::string csv = "plan_id,shard,shards,plan_size,plan_index,scene,scheme,dt\n";
+    for (std::size_t i = 0; i < results.size(); ++i)
+        csv += fmt::format("{},{},{},{},{},{},{},{}\n", plan_id, shard, shards, plan_size, plan_indices[i], results[i].spec.scene,
+                           results[i].spec.scheme, format_number(results[i].spec.dt));
+    return csv;
+}
+
+std::vector<RunResult> merge_shards(const std::vector<std::filesystem::path>& dirs) {
+    std::string plan;
+    int shards = 0;
+    std::size_t plan_size = 0;
+    std::vector<int> seen;
+    std::vector<std::optional<RunResult>> merged;
+    for (const auto& dir : dirs) {
+        const auto rows = read_csv(dir / "shard.csv", "plan_id,shard,shards,plan_size,plan_index,scene,scheme,dt");
+        const auto results = read_results(dir);
+        if (rows.size() != results.size())
+            throw InputError((dir / "shard.csv").string() + ": lists " + std::to_string(rows.size()) + " runs, runs.csv " +
+                             std::to_string(results.size()));
+        for (std::size_t i = 0; i < rows.size(); ++i) {
+            const auto& f = rows[i];
+            const int k = static_cast<int>(number(f[1], dir / "shard.csv")), n = static_cast<int>(number(f[2], dir / "shard.csv"));
+            const auto size = static_cast<std::size_t>(number(f[3], dir / "shard.csv"));
+            const auto index = static_cast<std::size_t>(number(f[4], dir / "shard.csv"));
+            if (plan.empty()) {
+                plan = f[0], shards = n, plan_size = size;
+                merged.resize(plan_size);
+            }
+            if (f[0] != plan || n != shards || size != plan_size)
+                throw InputError((dir / "shard.csv").string() + ": a slice of another sweep (plan " + f[0] + ", " +
+                                 std::to_string(n) + " shards) than the first directory's (plan " + plan + ", " +
+                                 std::to_string(shards) + " shards)");
+            if (i == 0) {
+                if (std::find(seen.begin(), seen.end(), k) != seen.end())
+                    throw InputError(dir.string() + ": shard " + std::to_string(k) + " is given twice");
+                seen.push_back(k);
+            }
+            const RunResult& r = results[i];
+            if (index >= plan_size || merged[index] || r.spec.scene != f[5] || r.spec.scheme != f[6])
+                throw InputError((dir / "shard.csv").string() + ": row " + std::to_string(i + 2) + " does not match runs.csv");
+            merged[index] = r;
+        }
+    }
+    if (static_cast<int>(seen.size()) != shards) {
+        std::string missing;
+        for (int k = 1; k <= shards; ++k)
+            if (std::find(seen.begin(), seen.end(), k) == seen.end()) missing += (missing.empty() ? "" : ", ") + std::to_string(k);
+        throw InputError("merge: shard(s) " + missing + " of " + std::to_string(shards) + " missing");
+    }
+    std::vector<RunResult> out;
+    for (auto& r : merged) {
+        if (!r) throw InputError("merge: the shards do not cover the whole plan");
+        out.push_back(std::move(*r));
+    }
+    return out;
 }
 
 }  // namespace rotbench

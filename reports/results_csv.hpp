@@ -21,4 +21,14 @@ std::string runs_csv(const std::vector<RunResult>& results);
 // when a file is missing or malformed.
 std::vector<RunResult> read_results(const std::filesystem::path& dir);
 
+// shard.csv, written by `rotbench run --shard K/N` beside its results.csv and runs.csv:
+// header plan_id,shard,shards,plan_size,plan_index,scene,scheme,dt, a row per run of the
+// slice, in the order of runs.csv.
+std::string shard_csv(const std::string& plan_id, int shard, int shards, const std::vector<RunResult>& results,
+                      const std::vector<std::size_t>& plan_indices, std::size_t plan_size);
+
+// The results of the shard directories, in plan order. InputError unless they are the N
+// slices of one sweep (same plan_id and N), each exactly once.
+std::vector<RunResult> merge_shards(const std::vector<std::filesystem::path>& dirs);
+
 }  // namespace rotbench

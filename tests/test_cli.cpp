@@ -131,3 +131,65 @@ TEST_CASE("an output path that is a file, not a directory, is bad input (exit st
     CHECK(read(file) == "not a directory\n");
     fs::remove(file);
 }
+
+namespace {
+
+// A CSV without its timing rows: what must not depend on how the sweep was run.
+std::string without_timing(const std::string& csv) {
+    std::istringstream in(csv);
+    std::string line, out;
+    while (std::getline(in, line)) {
+        bool timing = false;
+        for (const char* t : {",cpu_seconds,", ",cpu_seconds_min,", ",cpu_seconds_max,", ",ns_per_step,", ",timing_repeats,"})
+            timing = timing || line.find(t) != std::string::npos;
+        if (!timing) out += line + "\n";
+    }
+    return out;
+}
+
+}  // namespace
+
+TEST_CASE("run --shard K/N and merge give the outputs of the unsharded run, timings aside") {
+    const fs::path dir = fresh_dir("shard");
+    const std::vector<std::string> sweep = {"--scenes", "asymmetric_free,dipole_top", "--schemes", "direct,zvw,no_squish",
+                                            "--quick", "--jobs", "2"};
+    const auto run = [&](std::vector<std::string> extra) {
+        std::vector<std::string> args = {"run"};
+        args.insert(args.end(), sweep.begin(), sweep.end());
+        args.insert(args.end(), extra.begin(), extra.end());
+        return cli(args);
+    };
+    REQUIRE(run({"--out", (dir / "full").string()}).status == 0);
+    for (const char* k : {"1/3", "2/3", "3/3"}) REQUIRE(run({"--shard", k, "--out", (dir / ("s" + std::string(1, k[0]))).string()}).status == 0);
+    CHECK_FALSE(fs::exists(dir / "s1" / "report.md"));  // a slice has no orders or report of its own
+    const Cli merged = cli({"merge", (dir / "s3").string(), (dir / "s1").string(), (dir / "s2").string(), "--out", (dir / "m").string()});
+    REQUIRE(merged.status == 0);
+    for (const char* f : {"results.csv", "runs.csv", "orders.csv", "local_orders.csv"}) {
+        INFO(f);
+        CHECK(without_timing(read(dir / "m" / f)) == without_timing(read(dir / "full" / f)));
+    }
+    CHECK(fs::exists(dir / "m" / "report.md"));
+
+    // Slices that do not make one sweep are refused.
+    const Cli missing = cli({"merge", (dir / "s1").string(), (dir / "s2").string(), "--out", (dir / "m2").string()});
+    CHECK(missing.status == 2);
+    CHECK_THAT(missing.err, Catch::Contains("shard(s) 3 of 3 missing"));
+    const Cli twice = cli({"merge", (dir / "s1").string(), (dir / "s1").string(), "--out", (dir / "m2").string()});
+    CHECK(twice.status == 2);
+    CHECK_THAT(twice.err, Catch::Contains("shard 1 is given twice"));
+    REQUIRE(cli({"run", "--scenes", "asymmetric_free", "--schemes", "zvw", "--quick", "--shard", "2/3", "--out", (dir / "other").string()}).status == 0);
+    const Cli foreign = cli({"merge", (dir / "s1").string(), (dir / "other").string(), (dir / "s3").string(), "--out", (dir / "m2").string()});
+    CHECK(foreign.status == 2);
+    CHECK_THAT(foreign.err, Catch::Contains("a slice of another sweep"));
+    const Cli not_a_shard = cli({"merge", (dir / "full").string(), "--out", (dir / "m2").string()});
+    CHECK(not_a_shard.status == 2);
+    CHECK_THAT(not_a_shard.err, Catch::Contains("shard.csv"));
+    for (const char* bad : {"0/2", "3/2", "1/0", "a/b", "2", "1/2/3", "-1/2"}) {
+        const Cli r = cli({"run", "--scenes", "asymmetric_free", "--quick", "--shard", bad, "--out", (dir / "bad").string()});
+        INFO(bad);
+        CHECK(r.status == 2);
+        CHECK_THAT(r.err, Catch::Contains("expected K/N with integers 1 <= K <= N"));
+    }
+    CHECK_FALSE(fs::exists(dir / "bad"));
+    fs::remove_all(dir);
+}
