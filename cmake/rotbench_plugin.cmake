@@ -2,7 +2,7 @@
 #
 # Builds out-of-tree schemes as a plug-in for `rotbench --plugin <target>.so`. Each source
 # is written as an in-tree scheme is: a kernel and a RegisterScheme<> object. The library
-# gets the ABI entry points (schemes/plugin_entry.cpp) and hidden visibility, so that its
+# gets the ABI entry points (cmake/rotbench_plugin_entry.cpp) and hidden visibility, so that its
 # registry is its own until rotbench copies the entries after checking the ABI.
 function(rotbench_add_scheme target)
   cmake_parse_arguments(ARG "" "" "SOURCES" ${ARGN})
