@@ -8,10 +8,10 @@
 //                interface on a one-body state (copy in, predict, correct, copy out): the
 //                straightforward way, against which the batched loops are measured.
 // The schemes are the registered ones: the same code that the scenes run.
+#include "benchmarks/random_bodies.hpp"
 #include "schemes/scheme.hpp"
 
 #include <benchmark/benchmark.h>
-#include <random>
 
 using namespace rotbench;
 
@@ -27,22 +27,6 @@ struct LoadStoreOnly {
     static void predict(RigidBody& b, Memory&, double) { benchmark::DoNotOptimize(b); }
     static void correct(RigidBody& b, Memory&, double) { benchmark::DoNotOptimize(b); }
 };
-
-// N bodies with moments in [1, 3], random orientations, angular velocities and torques
-// (fixed seed: every run and every scheme sees the same state).
-Bodies random_bodies(std::size_t n) {
-    Bodies b;
-    b.resize(n);
-    std::mt19937_64 rng(20261122);
-    std::uniform_real_distribution<double> u(-1.0, 1.0), moment(1.0, 3.0);
-    for (std::size_t i = 0; i < n; ++i) {
-        b.inertia.set(i, Vec3(moment(rng), moment(rng), moment(rng)));
-        b.orientation.set(i, Quat(u(rng), u(rng), u(rng), u(rng)).normalized());
-        b.omega.set(i, Vec3(u(rng), u(rng), u(rng)));
-        b.torque.set(i, Vec3(u(rng), u(rng), u(rng)));
-    }
-    return b;
-}
 
 void per_body_step(benchmark::State& state, std::size_t n) {
     state.counters["ns_per_body_step"] =

@@ -3,11 +3,11 @@
 // steps is S steps' worth of instructions, free of start-up and set-up; divided by N S it
 // is the scheme's instructions per body-step, a figure that does not depend on the load of
 // a shared machine.
+#include "benchmarks/random_bodies.hpp"
 #include "schemes/scheme.hpp"
 
 #include <cstdio>
 #include <cstdlib>
-#include <random>
 #include <string>
 
 using namespace rotbench;
@@ -21,16 +21,7 @@ int main(int argc, char** argv) {
         const auto make = SchemeRegistry::instance().at(argv[1], "scheme").make;
         const auto n = static_cast<std::size_t>(std::stoul(argv[2]));
         const long steps = std::stol(argv[3]);
-        Bodies b;
-        b.resize(n);
-        std::mt19937_64 rng(20261122);  // the state of benchmarks/batched_step.cpp
-        std::uniform_real_distribution<double> u(-1.0, 1.0), moment(1.0, 3.0);
-        for (std::size_t i = 0; i < n; ++i) {
-            b.inertia.set(i, Vec3(moment(rng), moment(rng), moment(rng)));
-            b.orientation.set(i, Quat(u(rng), u(rng), u(rng), u(rng)).normalized());
-            b.omega.set(i, Vec3(u(rng), u(rng), u(rng)));
-            b.torque.set(i, Vec3(u(rng), u(rng), u(rng)));
-        }
+        Bodies b = random_bodies(n);
         auto scheme = make();
         scheme->start(b);
         for (long s = 0; s < steps; ++s) {

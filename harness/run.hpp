@@ -44,6 +44,12 @@ std::int64_t step_count(double t_end, double dt);
 // that step; its error metrics are NaN.
 inline constexpr double blowup_energy_factor = 1e6;
 
+// The metrics that time a run (cpu_seconds, cpu_seconds_min, cpu_seconds_max,
+// timing_repeats, ns_per_step): the only ones two runs of the same command may disagree on.
+inline bool is_timing_metric(const std::string& name) {
+    return name.rfind("cpu_seconds", 0) == 0 || name == "ns_per_step" || name == "timing_repeats";
+}
+
 struct RunOptions {
     bool measure_time = true;  // off in tests: the timing run repeats the whole simulation
     int series_samples = 0;    // > 0: record about this many energy samples (and t = 0),

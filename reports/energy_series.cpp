@@ -147,11 +147,10 @@ std::string energy_series_section(const std::vector<RunResult>& results, const s
 }
 
 void write_energy_series(const std::vector<RunResult>& results, const std::filesystem::path& dir) {
+    if (std::none_of(results.begin(), results.end(), [](const RunResult& r) { return !r.series.empty(); })) return;
+    std::filesystem::create_directories(dir / "series");
     for (const auto& r : results)
-        if (!r.series.empty()) {
-            std::filesystem::create_directories(dir / "series");
-            write_series(r, dir / "series");
-        }
+        if (!r.series.empty()) write_series(r, dir / "series");
 }
 
 }  // namespace rotbench

@@ -26,15 +26,14 @@ struct CayleyRotation {
         const Vec3& inertia = start.inertia;
         const Vec3 p = to_body(start.q, momentum);
         Vec3 xi = p.cwiseQuotient(inertia);
-        const double h = dt;
         constexpr int max_iterations = 50;
         for (int i = 0;; ++i) {
             const Vec3 ixi = inertia.cwiseProduct(xi);
             const double s = xi.dot(ixi);
-            const Vec3 residual = ixi + 0.5 * h * xi.cross(ixi) + 0.25 * h * h * s * xi - p;
+            const Vec3 residual = ixi + 0.5 * dt * xi.cross(ixi) + 0.25 * dt * dt * s * xi - p;
             const Eigen::Matrix3d jacobian = Eigen::Matrix3d(inertia.asDiagonal()) +
-                                             0.5 * h * (hat(xi) * inertia.asDiagonal() - hat(ixi)) +
-                                             0.25 * h * h * (s * Eigen::Matrix3d::Identity() + 2.0 * xi * ixi.transpose());
+                                             0.5 * dt * (hat(xi) * inertia.asDiagonal() - hat(ixi)) +
+                                             0.25 * dt * dt * (s * Eigen::Matrix3d::Identity() + 2.0 * xi * ixi.transpose());
             const Vec3 delta = jacobian.partialPivLu().solve(residual);
             xi -= delta;
             // Newton converges quadratically: stop at a few units of round-off.
@@ -42,7 +41,7 @@ struct CayleyRotation {
             if (i == max_iterations)
                 throw std::runtime_error("cayley: Newton's method did not converge in 50 iterations (time step too large)");
         }
-        return start.q * cayley_rotation(h * xi);
+        return start.q * cayley_rotation(dt * xi);
     }
 };
 
