@@ -100,6 +100,9 @@ int run(const RunOptionsText& o, const std::string& command_line, std::ostream& 
     std::vector<std::size_t> indices;
     const Shard shard = o.shard.empty() ? Shard{} : parse_shard(o.shard);
     if (!o.shard.empty()) {
+        // An empty slice would leave merge nothing to recognise it by.
+        if (static_cast<std::size_t>(shard.count) > plan_size)
+            throw InputError(fmt::format("--shard {}: the sweep has only {} run(s), so at most {} shard(s)", o.shard, plan_size, plan_size));
         indices = shard_indices(plan_size, shard);
         std::vector<RunSpec> slice;
         for (std::size_t i : indices) slice.push_back(plan[i]);

@@ -1,5 +1,8 @@
+#include "harness/parse.hpp"
+#include "harness/run.hpp"
 #include "tests/cli_helpers.hpp"
 
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cstdlib>
 #include <filesystem>
@@ -139,10 +142,8 @@ std::string without_timing(const std::string& csv) {
     std::istringstream in(csv);
     std::string line, out;
     while (std::getline(in, line)) {
-        bool timing = false;
-        for (const char* t : {",cpu_seconds,", ",cpu_seconds_min,", ",cpu_seconds_max,", ",ns_per_step,", ",timing_repeats,"})
-            timing = timing || line.find(t) != std::string::npos;
-        if (!timing) out += line + "\n";
+        const auto fields = split_commas(line);
+        if (std::none_of(fields.begin(), fields.end(), is_timing_metric)) out += line + "\n";
     }
     return out;
 }
@@ -190,6 +191,12 @@ TEST_CASE("run --shard K/N and merge give the outputs of the unsharded run, timi
         CHECK(r.status == 2);
         CHECK_THAT(r.err, Catch::Contains("expected K/N with integers 1 <= K <= N"));
     }
+    CHECK_FALSE(fs::exists(dir / "bad"));
+    // More shards than runs would leave a slice empty, which merge could not place.
+    const Cli too_many = cli({"run", "--scenes", "asymmetric_free", "--schemes", "zvw", "--dt", "0.1", "--shard", "1/2", "--out",
+                              (dir / "bad").string()});
+    CHECK(too_many.status == 2);
+    CHECK_THAT(too_many.err, Catch::Contains("the sweep has only 1 run(s), so at most 1 shard(s)"));
     CHECK_FALSE(fs::exists(dir / "bad"));
     fs::remove_all(dir);
 }
