@@ -3,8 +3,10 @@
 #include "harness/config.hpp"
 #include "harness/export.hpp"
 #include "harness/gate.hpp"
+#include "harness/journal.hpp"
 #include "harness/parse.hpp"
 #include "harness/plugin.hpp"
+#include "harness/run_command.hpp"
 #include "harness/shard.hpp"
 #include "harness/stability_study.hpp"
 #include "harness/sweep.hpp"
@@ -24,24 +26,13 @@
 namespace rotbench {
 namespace {
 
-struct RunOptionsText {
-    std::string scenes, schemes, dts, t_end, config, shard, out = "rotbench-out";
-    std::vector<std::string> settings;
-    int energy_series = 400;
-    int jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-    bool overwrite = false, quick = false;
-};
-
-// The sweep the options describe: the config file first, the command line over it.
-SweepSpec sweep_spec(const RunOptionsText& o) {
-    SweepSpec spec = o.config.empty() ? SweepSpec{} : load_config(o.config);
-    if (!o.scenes.empty()) spec.scenes = parse_id_list(o.scenes, SceneRegistry::instance(), "scene");
-    if (!o.schemes.empty()) spec.schemes = parse_id_list(o.schemes, SchemeRegistry::instance(), "scheme");
-    if (!o.dts.empty()) spec.dts = parse_positive_list(o.dts, "--dt");
-    if (!o.t_end.empty()) spec.t_end = parse_positive(o.t_end, "--t-end");
-    for (const auto& s : o.settings) add_setting(spec, s);
-    spec.quick = o.quick;
-    return spec;
+// An option given with an empty value ("--scenes ''", often an unset shell variable) is bad
+// input, never a silent "the default".
+void refuse_empty_values(const CLI::App& app) {
+    for (const auto* option : app.get_options())
+        for (const auto& value : option->results())
+            if (value.empty()) throw InputError(option->get_name() + ": the value is empty; give one or leave the option out");
+    for (const auto* sub : app.get_subcommands()) refuse_empty_values(*sub);
 }
 
 void list_params(const std::string& scene_id, std::ostream& out) {
@@ -71,68 +62,6 @@ void list(std::ostream& out) {
     }
 }
 
-std::filesystem::path prepare_output(const std::string& dir, bool overwrite) {
-    const std::filesystem::path path(dir);
-    std::error_code ec;
-    if (std::filesystem::exists(path / "results.csv") && !overwrite)
-        throw InputError("--out " + dir + " already holds results.csv; pass --overwrite or choose another directory");
-    std::filesystem::create_directories(path, ec);
-    if (ec || !std::filesystem::is_directory(path)) throw InputError("--out " + dir + ": cannot create the directory");
-    return path;
-}
-
-// results.csv, runs.csv, the orders and report.md: what `run` writes, and `merge` too.
-void write_outputs(const std::filesystem::path& dir, const std::vector<RunResult>& results, const std::string& command_line,
-                   std::ostream& out) {
-    write_file_atomically(dir / "results.csv", results_csv(results));
-    write_file_atomically(dir / "runs.csv", runs_csv(results));
-    const auto orders = observed_orders(results);
-    write_file_atomically(dir / "orders.csv", orders_csv(orders));
-    write_file_atomically(dir / "local_orders.csv", local_orders_csv(orders));
-    write_file_atomically(dir / "report.md", markdown_report(results, command_line, dir));
-    out << fmt::format("wrote {} and {}\n", (dir / "results.csv").string(), (dir / "report.md").string());
-}
-
-int run(const RunOptionsText& o, const std::string& command_line, std::ostream& out) {
-    auto plan = plan_sweep(sweep_spec(o));  // every input checked before anything runs
-    const std::size_t plan_size = plan.size();
-    const std::string id = plan_id(plan);
-    std::vector<std::size_t> indices;
-    const Shard shard = o.shard.empty() ? Shard{} : parse_shard(o.shard);
-    if (!o.shard.empty()) {
-        // An empty slice would leave merge nothing to recognise it by.
-        if (static_cast<std::size_t>(shard.count) > plan_size)
-            throw InputError(fmt::format("--shard {}: the sweep has only {} run(s), so at most {} shard(s)", o.shard, plan_size, plan_size));
-        indices = shard_indices(plan_size, shard);
-        std::vector<RunSpec> slice;
-        for (std::size_t i : indices) slice.push_back(plan[i]);
-        plan = std::move(slice);
-    }
-    const auto dir = prepare_output(o.out, o.overwrite);
-
-    RunOptions options;
-    options.series_samples = o.energy_series;
-    const auto results = run_sweep(
-        plan, options,
-        [&](const RunResult& r) {
-            out << fmt::format("{:<16} {:<16} dt={:<10g} {}\n", r.spec.scene, r.spec.scheme, r.spec.dt,
-                               r.failure.empty() ? "ok" : "FAILED: " + r.failure);
-        },
-        o.jobs);
-    if (o.shard.empty()) {
-        write_outputs(dir, results, command_line, out);
-        return 0;
-    }
-    // A slice: the runs and series for `merge`, no orders or report (they need every run).
-    write_file_atomically(dir / "results.csv", results_csv(results));
-    write_file_atomically(dir / "runs.csv", runs_csv(results));
-    write_energy_series(results, dir);
-    write_file_atomically(dir / "shard.csv", shard_csv(id, shard.index, shard.count, results, indices, plan_size));
-    out << fmt::format("wrote shard {}/{} ({} of {} runs) to {}; combine the shards with rotbench merge\n", shard.index,
-                       shard.count, results.size(), plan_size, dir.string());
-    return 0;
-}
-
 struct ExportOptionsText {
     std::string scene, scheme, dt, t_end, out;
     std::vector<std::string> settings;
@@ -160,9 +89,36 @@ void write_export(const std::string& out, const std::string& csv, std::ostream& 
     log << "wrote " << out << "\n";
 }
 
-}  // namespace
+int run_cli_arguments(const std::vector<std::string>& arguments, std::ostream& out, std::ostream& err,
+                      const std::optional<std::filesystem::path>& resuming);
 
-int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
+// `run --resume DIR`: the interrupted run's own arguments, run again from the directory it
+// was started in (relative paths in them stay right); its journal holds the finished runs.
+int resume(const CLI::App& app, const CLI::App& run_cmd, const std::string& dir, std::ostream& out, std::ostream& err) {
+    for (const auto* command : {&app, &run_cmd})
+        for (const auto* option : command->get_options())
+            if (option->count() > 0 && option->get_name() != "--resume")
+                throw InputError(option->get_name() + ": --resume DIR takes no other option; the sweep's are read from " +
+                                 (std::filesystem::path(dir) / "partial" / "command").string());
+    const auto absolute = std::filesystem::absolute(dir);
+    const auto arguments = Journal::arguments(absolute);
+    const auto here = std::filesystem::current_path();
+    std::filesystem::current_path(Journal::working_directory(absolute));
+    struct GoBack {
+        std::filesystem::path to;
+        ~GoBack() {
+            std::error_code ec;
+            std::filesystem::current_path(to, ec);
+        }
+    } go_back{here};
+    return run_cli_arguments(arguments, out, err, absolute);
+}
+
+int run_cli_arguments(const std::vector<std::string>& arguments, std::ostream& out, std::ostream& err,
+                      const std::optional<std::filesystem::path>& resuming) {
+    std::vector<const char*> argv = {"rotbench"};
+    for (const auto& a : arguments) argv.push_back(a.c_str());
+    const int argc = static_cast<int>(argv.size());
     CLI::App app{"rotbench: verification and convergence harness for rigid-body rotation schemes"};
     app.require_subcommand(1);
     app.fallthrough();  // --plugin may follow the command
@@ -171,22 +127,7 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
     auto* list_cmd = app.add_subcommand("list", "list the registered schemes and scenes");
     auto* run_cmd = app.add_subcommand("run", "run schemes on scenes and write results.csv and report.md");
     RunOptionsText o;
-    run_cmd->add_option("--scenes", o.scenes, "comma list of scene ids (default: all)");
-    run_cmd->add_option("--schemes", o.schemes, "comma list of scheme ids (default: all)");
-    run_cmd->add_option("--dt", o.dts, "comma list of time steps in s (default: each scene's ladder)");
-    run_cmd->add_option("--t-end", o.t_end, "duration in s (default: each scene's)");
-    run_cmd->add_option("--out", o.out, "output directory")->capture_default_str();
-    run_cmd->add_flag("--overwrite", o.overwrite, "replace results already in --out");
-    run_cmd->add_option("--set", o.settings, "scene parameter, SCENE.KEY=VALUE (repeatable; VALUE may be a comma list)");
-    run_cmd->add_option("--config", o.config, "TOML file with [run] selections and [SCENE] parameters");
-    run_cmd->add_flag("--quick", o.quick, "each scene's short ladder of time steps (for CI)");
-    run_cmd->add_option("--shard", o.shard, "K/N: run only the K-th of N deterministic slices (combine with merge)");
-    run_cmd->add_option("--jobs", o.jobs, "runs in parallel (results do not depend on it)")
-        ->capture_default_str()
-        ->check(CLI::PositiveNumber);
-    run_cmd->add_option("--energy-series", o.energy_series, "energy samples per run in scenes that plot it (0: none)")
-        ->capture_default_str()
-        ->check(CLI::NonNegativeNumber);
+    add_run_options(*run_cmd, o);
     ExportOptionsText ref_o, traj_o;
     auto* reference_cmd = app.add_subcommand("reference", "export a scene's reference trajectory as CSV");
     auto* trajectory_cmd = app.add_subcommand("trajectory", "export one scheme's trajectory on a scene as CSV");
@@ -212,7 +153,7 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
     stability_cmd->add_option("--zeta", stab_zetas, "damping ratios (contact scenes)")->capture_default_str();
     stability_cmd->add_option("--omega-max", stab_omegas, "spin rates, rad/s (fast_spin)")->capture_default_str();
     stability_cmd->add_option("--out", stab_out, "output directory")->capture_default_str();
-    stability_cmd->add_option("--jobs", stab_jobs, "cases in parallel")->check(CLI::PositiveNumber);
+    stability_cmd->add_option("--jobs", stab_jobs, "cases in parallel")->check(CLI::Range(1, max_jobs));
     stability_cmd->add_flag("--overwrite", stab_overwrite, "replace results already in --out");
     std::string params_of;
     list_cmd->add_option("--params", params_of, "list the parameters of this scene");
@@ -230,7 +171,7 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
     gate_cmd->add_option("FILE", gate_file, "gate file (TOML, [[check]] tables)")->required();
     gate_cmd->add_option("--junit", gate_junit_file, "write JUnit XML here (one test case per check and scheme)");
     gate_cmd->add_option("--out", gate_out, "also write gate.csv and results.csv of the runs here");
-    gate_cmd->add_option("--jobs", gate_jobs, "runs in parallel (results do not depend on it)")->check(CLI::PositiveNumber);
+    gate_cmd->add_option("--jobs", gate_jobs, "runs in parallel (results do not depend on it)")->check(CLI::Range(1, max_jobs));
     gate_cmd->add_flag("--overwrite", gate_overwrite, "replace a gate.csv already in --out");
 
     std::string command_line = "rotbench";
@@ -242,7 +183,9 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
                                                    merge_cmd->get_name()};
         if (argc > 1 && argv[1][0] != '-' && std::find(commands.begin(), commands.end(), argv[1]) == commands.end())
             throw InputError(std::string("unknown command '") + argv[1] + "'; valid commands: " + join(commands, ", "));
-        app.parse(argc, argv);
+        app.parse(argc, argv.data());
+        refuse_empty_values(app);
+        if (*run_cmd && !o.resume.empty()) return resume(app, *run_cmd, o.resume, out, err);
         for (const auto& plugin : plugins) {
             const auto ids = load_plugin(plugin);
             err << "rotbench: loaded " << join(ids, ", ") << " from " << plugin << "\n";
@@ -250,18 +193,13 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
         if (*merge_cmd) {
             std::vector<std::filesystem::path> dirs(merge_dirs.begin(), merge_dirs.end());
             const auto results = merge_shards(dirs);
-            write_outputs(prepare_output(merge_out, merge_overwrite), results, command_line, out);
+            write_outputs(prepare_output(merge_out, "results.csv", merge_overwrite), results, command_line, out);
             return 0;
         }
         if (*gate_cmd) {
             const auto checks = load_gate(gate_file);
             std::filesystem::path dir;
-            if (!gate_out.empty()) {
-                dir = gate_out;
-                if (std::filesystem::exists(dir / "gate.csv") && !gate_overwrite)
-                    throw InputError("--out " + gate_out + " already holds gate.csv; pass --overwrite or choose another directory");
-                std::filesystem::create_directories(dir);
-            }
+            if (!gate_out.empty()) dir = prepare_output(gate_out, "gate.csv", gate_overwrite);
             if (!gate_junit_file.empty()) {
                 const std::filesystem::path parent = std::filesystem::path(gate_junit_file).parent_path();
                 if (!parent.empty() && !std::filesystem::is_directory(parent))
@@ -286,17 +224,9 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
             const auto scenes = parse_id_list(stab_scenes, SceneRegistry::instance(), "scene");
             const auto schemes = stab_schemes.empty() ? SchemeRegistry::instance().ids()
                                                       : parse_id_list(stab_schemes, SchemeRegistry::instance(), "scheme");
-            std::vector<double> zetas;
-            for (const auto& z : split_commas(stab_zetas)) {
-                const double v = parse_finite(z, "--zeta");
-                if (v < 0) throw InputError("--zeta: '" + z + "' must not be negative");
-                zetas.push_back(v);
-            }
+            const auto zetas = parse_nonnegative_list(stab_zetas, "--zeta");
             const auto omegas = parse_positive_list(stab_omegas, "--omega-max");
-            const std::filesystem::path dir(stab_out);
-            if (std::filesystem::exists(dir / "stability.csv") && !stab_overwrite)
-                throw InputError("--out " + stab_out + " already holds stability.csv; pass --overwrite or choose another directory");
-            std::filesystem::create_directories(dir);
+            const auto dir = prepare_output(stab_out, "stability.csv", stab_overwrite);
             const auto rows = stability_study(scenes, schemes, zetas, omegas, stab_jobs);
             write_file_atomically(dir / "stability.csv", stability_csv(rows));
             write_file_atomically(dir / "stability_spin.csv", stability_spin_csv(rows));
@@ -322,7 +252,7 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
             write_export(traj_o.out, scheme_trajectory_csv(*export_scene(traj_o), traj_o.scheme, dt, traj_o.samples), out);
             return 0;
         }
-        return run(o, command_line, out);
+        return run_command(o, arguments, command_line, out, err, resuming);
     } catch (const CLI::CallForHelp&) {
         out << app.help();
         return 0;
@@ -340,6 +270,12 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
         err << "rotbench: " << e.what() << "\n";
         return 2;
     }
+}
+
+}  // namespace
+
+int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
+    return run_cli_arguments(std::vector<std::string>(argv + 1, argv + argc), out, err, std::nullopt);
 }
 
 }  // namespace rotbench

@@ -3,6 +3,7 @@
 #include "harness/parse.hpp"
 #include "harness/toml_input.hpp"
 
+#include <algorithm>
 #include <fmt/format.h>
 
 namespace rotbench {
@@ -21,8 +22,10 @@ SweepSpec load_config(const std::string& path) {
                 else if (key == "schemes") spec.schemes = ids(path, key, v, SchemeRegistry::instance(), "scheme");
                 else if (key == "dt") {
                     spec.dts = numbers(path, key, v);
-                    for (double dt : spec.dts)
-                        if (!(dt > 0.0) || !std::isfinite(dt)) toml_error(path, v, "'dt' values must be finite numbers greater than 0");
+                    for (auto dt = spec.dts.begin(); dt != spec.dts.end(); ++dt) {
+                        if (!(*dt > 0.0) || !std::isfinite(*dt)) toml_error(path, v, "'dt' values must be finite numbers greater than 0");
+                        if (std::find(spec.dts.begin(), dt, *dt) != dt) toml_error(path, v, fmt::format("'dt': {} is given twice", *dt));
+                    }
                 } else if (key == "t_end") {
                     spec.t_end = positive_number(path, key, v);
                 } else {

@@ -44,15 +44,32 @@ double parse_positive(const std::string& text, const std::string& option) {
     return value;
 }
 
-std::vector<double> parse_positive_list(const std::string& text, const std::string& option) {
+namespace {
+
+template <class ParseOne>
+std::vector<double> parse_list(const std::string& text, const std::string& option, ParseOne parse_one) {
     std::vector<double> values;
     for (const std::string& part : split_commas(text)) {
-        const double v = parse_positive(part, option);
+        const double v = parse_one(part, option);
         if (std::find(values.begin(), values.end(), v) != values.end())
             throw InputError(option + ": " + part + " is given twice");
         values.push_back(v);
     }
     return values;
+}
+
+}  // namespace
+
+std::vector<double> parse_positive_list(const std::string& text, const std::string& option) {
+    return parse_list(text, option, parse_positive);
+}
+
+std::vector<double> parse_nonnegative_list(const std::string& text, const std::string& option) {
+    return parse_list(text, option, [](const std::string& part, const std::string& opt) {
+        const double v = parse_finite(part, opt);
+        if (v < 0) throw InputError(opt + ": '" + part + "' must not be negative");
+        return v;
+    });
 }
 
 }  // namespace rotbench

@@ -18,6 +18,9 @@ double parse_finite(const std::string& text, const std::string& option);
 // A comma list of positive numbers; duplicates are rejected.
 std::vector<double> parse_positive_list(const std::string& text, const std::string& option);
 
+// A comma list of finite numbers >= 0; duplicates are rejected.
+std::vector<double> parse_nonnegative_list(const std::string& text, const std::string& option);
+
 // A comma list of registered ids (valid ones listed on error); duplicates are rejected.
 template <class Product, class Extra>
 std::vector<std::string> parse_id_list(const std::string& text, const Registry<Product, Extra>& registry,

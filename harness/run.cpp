@@ -1,5 +1,6 @@
 #include "harness/run.hpp"
 
+#include "harness/interrupt.hpp"
 #include "harness/timing.hpp"
 #include "references/reference.hpp"
 #include "schemes/quaternion.hpp"
@@ -44,6 +45,7 @@ public:
     }
 
     bool operator()(std::int64_t n, double t, const Bodies& b) {
+        if (interrupt_signal()) return false;
         const double energy = finite_state(b) ? scene_.energy(b) : nan;
         const bool runaway = scene_.conserves_energy() && std::abs(energy - energy0_) > blowup_energy_factor * energy_scale_;
         if (!std::isfinite(energy) || runaway) {
@@ -180,6 +182,10 @@ RunResult run_one(const RunSpec& requested, const RunOptions& options) {
         unstable = true;
     }
 
+    if (interrupt_signal()) {
+        result.interrupted = true;
+        return result;
+    }
     CpuTiming cpu{nan, nan, nan, 0};
     if (!unstable && options.measure_time) {
         // Timing run: the same loop without the observer, so the reference solution and
@@ -188,8 +194,12 @@ RunResult run_one(const RunSpec& requested, const RunOptions& options) {
             Bodies bodies = scene->initial_state();
             auto scheme = scheme_entry.make();
             std::int64_t evals = 0;
-            simulate(*scene, *scheme, bodies, dt, steps, evals, [](std::int64_t, double, const Bodies&) { return true; });
+            simulate(*scene, *scheme, bodies, dt, steps, evals, [](std::int64_t, double, const Bodies&) { return !interrupt_signal(); });
         });
+    }
+    if (interrupt_signal()) {
+        result.interrupted = true;
+        return result;
     }
     result.metrics.emplace_back("steps", static_cast<double>(done));
     result.metrics.emplace_back("force_evals", static_cast<double>(force_evals));

@@ -23,6 +23,7 @@ struct RunResult {
     RunSpec spec;
     std::vector<std::pair<std::string, double>> metrics;  // names are the CSV contract
     std::string failure;  // empty, or why the run stopped early
+    bool interrupted = false;  // SIGINT or SIGTERM stopped it: not a result
     // Energy against time, when asked for: columns t, energy_error ((E - E0)/|E0|), then
     // the scene's energy parts by name.
     std::vector<std::string> series_columns;

@@ -1,5 +1,6 @@
 #include "harness/sweep.hpp"
 
+#include "harness/interrupt.hpp"
 #include "harness/parallel.hpp"
 
 #include <algorithm>
@@ -36,15 +37,17 @@ std::vector<RunSpec> plan_sweep(const SweepSpec& spec) {
 }
 
 std::vector<RunResult> run_sweep(const std::vector<RunSpec>& plan, const RunOptions& options,
-                                 const std::function<void(const RunResult&)>& on_done, int jobs) {
+                                 const std::function<void(std::size_t, const RunResult&)>& on_done, int jobs) {
     std::vector<RunResult> results(plan.size());
     std::mutex done_mutex;
     // run_one records a failing scheme; what it throws is bad input (none expected after
     // plan_sweep), rethrown once every run has finished.
     parallel_for(plan.size(), jobs, [&](std::size_t i) {
+        if (interrupt_signal()) return;
         results[i] = run_one(plan[i], options);
+        if (results[i].interrupted) return;
         std::lock_guard lock(done_mutex);
-        if (on_done) on_done(results[i]);
+        if (on_done) on_done(i, results[i]);
     });
     return results;
 }

@@ -25,9 +25,10 @@ std::vector<RunSpec> plan_sweep(const SweepSpec& spec);
 
 // Runs the plan on `jobs` threads; a failing run is recorded and the sweep goes on. The
 // results come back in plan order whatever `jobs` is, and are the same bit for bit apart
-// from the timing metrics. `on_done` is called after each run, one call at a time, in the
-// order the runs finish.
+// from the timing metrics. `on_done(i, result)` is called after run i, one call at a time,
+// in the order the runs finish. Once SIGINT or SIGTERM is caught (harness/interrupt.hpp) no
+// run starts, the runs in flight stop, and on_done is not called for them.
 std::vector<RunResult> run_sweep(const std::vector<RunSpec>& plan, const RunOptions& options = {},
-                                 const std::function<void(const RunResult&)>& on_done = {}, int jobs = 1);
+                                 const std::function<void(std::size_t, const RunResult&)>& on_done = {}, int jobs = 1);
 
 }  // namespace rotbench

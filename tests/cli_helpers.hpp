@@ -2,7 +2,10 @@
 #pragma once
 
 #include "harness/cli.hpp"
+#include "harness/parse.hpp"
+#include "harness/run.hpp"
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -37,6 +40,17 @@ inline fs::path fresh_dir(const std::string& name) {
 inline std::string read(const fs::path& p) {
     std::ifstream in(p);
     return {std::istreambuf_iterator<char>(in), {}};
+}
+
+// A CSV without the rows that hold a timing metric: what two runs of one command share.
+inline std::string without_timing(const std::string& csv) {
+    std::istringstream in(csv);
+    std::string line, out;
+    while (std::getline(in, line)) {
+        const auto fields = split_commas(line);
+        if (std::none_of(fields.begin(), fields.end(), is_timing_metric)) out += line + "\n";
+    }
+    return out;
 }
 
 inline bool one_line(const std::string& s) { return !s.empty() && s.find('\n') == s.size() - 1; }

@@ -135,21 +135,6 @@ TEST_CASE("an output path that is a file, not a directory, is bad input (exit st
     fs::remove(file);
 }
 
-namespace {
-
-// A CSV without its timing rows: what must not depend on how the sweep was run.
-std::string without_timing(const std::string& csv) {
-    std::istringstream in(csv);
-    std::string line, out;
-    while (std::getline(in, line)) {
-        const auto fields = split_commas(line);
-        if (std::none_of(fields.begin(), fields.end(), is_timing_metric)) out += line + "\n";
-    }
-    return out;
-}
-
-}  // namespace
-
 TEST_CASE("run --shard K/N and merge give the outputs of the unsharded run, timings aside") {
     const fs::path dir = fresh_dir("shard");
     const std::vector<std::string> sweep = {"--scenes", "asymmetric_free,dipole_top", "--schemes", "direct,zvw,no_squish",

@@ -85,7 +85,7 @@ TEST_CASE("Munjiza's scheme keeps the angular momentum of a free body to round-o
 TEST_CASE("a scheme that fails is recorded and the sweep goes on") {
     const auto plan = plan_sweep({{"cylinder_free"}, {"test_nan", "test_throws", "test_explodes", "direct"}, {1e-3}, 0.0});
     std::vector<std::string> seen;
-    const auto results = run_sweep(plan, {.measure_time = false}, [&](const RunResult& r) { seen.push_back(r.spec.scheme); });
+    const auto results = run_sweep(plan, {.measure_time = false}, [&](std::size_t, const RunResult& r) { seen.push_back(r.spec.scheme); });
     REQUIRE(results.size() == 4);
     CHECK(seen == std::vector<std::string>{"test_nan", "test_throws", "test_explodes", "direct"});
 

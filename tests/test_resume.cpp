@@ -1,0 +1,120 @@
+// Nothing lost (issue 8): a sweep killed or interrupted part-way keeps every run it
+// finished, and `rotbench run --resume DIR` ends with the files an uninterrupted run writes.
+#include "tests/cli_helpers.hpp"
+
+#include <catch2/catch.hpp>
+#include <chrono>
+#include <csignal>
+#include <sys/wait.h>
+#include <thread>
+#include <unistd.h>
+
+using namespace rotbench;
+using namespace rotbench::test;
+
+namespace {
+
+// 48 runs of some 10 ms: long enough to be cut in the middle.
+const std::vector<std::string> sweep = {"run", "--scenes", "dipole_top,asymmetric_free,torqued_cylinder", "--schemes",
+                                        "direct,zvw,no_squish,cayley", "--quick", "--jobs", "2"};
+constexpr std::size_t sweep_runs = 48;
+
+std::size_t finished_runs(const fs::path& journal) {
+    std::size_t n = 0;
+    std::error_code ec;
+    for (const auto& e : fs::directory_iterator(journal, ec))
+        if (e.is_directory() && e.path().filename().string()[0] != '.') ++n;
+    return n;
+}
+
+// Starts the real binary on the sweep, sends `signal` once `runs` runs are on disk, and
+// returns the exit status (128 + signal when the process ended on the signal).
+int interrupted_run(const fs::path& out, int signal, std::size_t runs) {
+    std::vector<std::string> args = {ROTBENCH_EXE};
+    args.insert(args.end(), sweep.begin(), sweep.end());
+    args.insert(args.end(), {"--out", out.string()});
+    std::vector<char*> argv;
+    for (auto& a : args) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    const pid_t pid = fork();
+    if (pid == 0) {
+        freopen("/dev/null", "w", stdout);
+        freopen((out.string() + ".stderr").c_str(), "w", stderr);
+        execv(argv[0], argv.data());
+        _exit(127);
+    }
+    while (finished_runs(out / "partial") < runs) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    kill(pid, signal);
+    int status = 0;
+    waitpid(pid, &status, 0);
+    return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+}
+
+void same_outputs(const fs::path& a, const fs::path& b) {
+    for (const char* f : {"results.csv", "runs.csv", "orders.csv", "local_orders.csv"}) {
+        INFO(f);
+        CHECK(without_timing(read(a / f)) == without_timing(read(b / f)));
+    }
+    for (const auto& e : fs::directory_iterator(a / "series")) {
+        INFO(e.path().filename());
+        CHECK(read(e.path()) == read(b / "series" / e.path().filename()));
+    }
+}
+
+}  // namespace
+
+TEST_CASE("an interrupted sweep keeps its finished runs, and --resume ends with an uninterrupted run's files") {
+    const fs::path dir = fresh_dir("resume");
+    std::vector<std::string> whole = sweep;
+    whole.insert(whole.end(), {"--out", (dir / "whole").string()});
+    REQUIRE(cli(whole).status == 0);
+    CHECK_FALSE(fs::exists(dir / "whole" / "partial"));  // the journal goes once the outputs are written
+
+    for (const int signal : {SIGINT, SIGTERM, SIGKILL}) {
+        const fs::path out = dir / ("cut_by_" + std::to_string(signal));
+        {
+            INFO("signal " << signal);
+            CHECK(interrupted_run(out, signal, 4) == 128 + signal);
+            CHECK_FALSE(fs::exists(out / "results.csv"));  // no outputs of a part of the sweep
+            const std::size_t kept = finished_runs(out / "partial");
+            CHECK(kept >= 4);
+            CHECK(kept < sweep_runs);
+            if (signal != SIGKILL) {  // caught: it says what is kept and how to go on
+                const std::string err = read(out.string() + ".stderr");
+                CHECK(one_line(err));
+                CHECK_THAT(err, Catch::Contains("rotbench run --resume " + out.string()));
+            }
+            // A new run into the directory would throw the finished runs away: refused.
+            std::vector<std::string> again = sweep;
+            again.insert(again.end(), {"--out", out.string()});
+            const Cli refused = cli(again);
+            CHECK(refused.status == 2);
+            CHECK_THAT(refused.err, Catch::Contains("holds an interrupted run"));
+
+            const Cli resumed = cli({"run", "--resume", out.string()});
+            REQUIRE(resumed.status == 0);
+            CHECK_THAT(resumed.out, Catch::Contains("resuming: " + std::to_string(kept) + " of " + std::to_string(sweep_runs) + " runs were finished"));
+            same_outputs(dir / "whole", out);
+            CHECK_FALSE(fs::exists(out / "partial"));
+        }
+    }
+    fs::remove_all(dir);
+}
+
+TEST_CASE("run --resume: bad uses are refused with one line") {
+    const fs::path dir = fresh_dir("resume_bad");
+    const Cli nothing = cli({"run", "--resume", dir.string()});
+    CHECK(nothing.status == 2);
+    CHECK_THAT(nothing.err, Catch::Contains("no interrupted run there"));
+    CHECK(interrupted_run(dir, SIGINT, 2) == 130);
+    const Cli extra = cli({"run", "--resume", dir.string(), "--schemes", "direct"});
+    CHECK(extra.status == 2);
+    CHECK_THAT(extra.err, Catch::Contains("--resume DIR takes no other option"));
+    // The sweep its command describes must be the one that was cut short.
+    write(dir / "partial" / "plan", "0000000000000000/1/1 48\n");
+    const Cli changed = cli({"run", "--resume", dir.string()});
+    CHECK(changed.status == 2);
+    CHECK(one_line(changed.err));
+    CHECK_THAT(changed.err, Catch::Contains("is not the one that was interrupted"));
+    fs::remove_all(dir);
+}
