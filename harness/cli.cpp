@@ -226,6 +226,7 @@ int run_cli_arguments(const std::vector<std::string>& arguments, std::ostream& o
                                                       : parse_id_list(stab_schemes, SchemeRegistry::instance(), "scheme");
             const auto zetas = parse_nonnegative_list(stab_zetas, "--zeta");
             const auto omegas = parse_positive_list(stab_omegas, "--omega-max");
+            check_stability_scenes(scenes);
             const auto dir = prepare_output(stab_out, "stability.csv", stab_overwrite);
             const auto rows = stability_study(scenes, schemes, zetas, omegas, stab_jobs);
             write_file_atomically(dir / "stability.csv", stability_csv(rows));

@@ -21,12 +21,20 @@ ParamOverrides overrides(const StabilityRow& r) {
 
 }  // namespace
 
+void check_stability_scenes(const std::vector<std::string>& scenes) {
+    std::vector<std::string> valid;
+    for (const auto& id : SceneRegistry::instance().ids())
+        if (dynamic_cast<const StabilityProbe*>(make_scene(id).get())) valid.push_back(id);
+    for (const auto& scene : scenes)
+        if (std::find(valid.begin(), valid.end(), scene) == valid.end())
+            throw InputError("scene '" + scene + "' is not a stability scene; valid: " + join(valid, ", "));
+}
+
 std::vector<StabilityRow> stability_study(const std::vector<std::string>& scenes, const std::vector<std::string>& schemes,
                                           const std::vector<double>& zetas, const std::vector<double>& omegas, int jobs) {
+    check_stability_scenes(scenes);
     std::vector<StabilityRow> rows;
     for (const auto& scene : scenes) {
-        if (!dynamic_cast<const StabilityProbe*>(make_scene(scene).get()))
-            throw InputError("scene '" + scene + "' is not a stability scene; valid: ellipsoid_pair, fast_spin, sphere_pair");
         const bool spin = scene == "fast_spin";
         for (double value : spin ? omegas : zetas)
             for (const auto& scheme : schemes) rows.push_back({scene, scheme, spin ? 0.0 : value, spin ? value : 0.0});

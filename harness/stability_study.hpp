@@ -22,6 +22,9 @@ inline constexpr double stability_growth = 1e6;
 
 // Contact scenes run once per zeta, fast_spin once per omega_max; the eigenvalue limit is
 // NaN where the scene's state is not an equilibrium at rest.
+// InputError unless every id is a scene with a stability probe (the valid ones listed).
+void check_stability_scenes(const std::vector<std::string>& scenes);
+
 std::vector<StabilityRow> stability_study(const std::vector<std::string>& scenes, const std::vector<std::string>& schemes,
                                           const std::vector<double>& zetas, const std::vector<double>& omegas, int jobs);
 

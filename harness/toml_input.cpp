@@ -1,5 +1,7 @@
 #include "harness/toml_input.hpp"
 
+#include <filesystem>
+
 #include "harness/scene.hpp"
 
 #include <cmath>
@@ -62,6 +64,8 @@ std::string text(const std::string& path, const std::string& key, const toml::no
 }
 
 toml::table parse_toml_file(const std::string& path) {
+    // toml++ reads a directory as an empty file: a sweep of everything, not an error.
+    if (std::filesystem::is_directory(path)) throw InputError(path + ": cannot read the file (a directory)");
     try {
         return toml::parse_file(path);
     } catch (const toml::parse_error& e) {
