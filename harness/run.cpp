@@ -47,7 +47,9 @@ public:
     bool operator()(std::int64_t n, double t, const Bodies& b) {
         if (interrupt_signal()) return false;
         const double energy = finite_state(b) ? scene_.energy(b) : nan;
-        const bool runaway = scene_.conserves_energy() && std::abs(energy - energy0_) > blowup_energy_factor * energy_scale_;
+        const double limit = blowup_energy_factor * energy_scale_;
+        const bool runaway = scene_.conserves_energy() ? std::abs(energy - energy0_) > limit
+                                                       : !scene_.gains_energy() && energy - energy0_ > limit;
         if (!std::isfinite(energy) || runaway) {
             fail_step_ = n;
             fail_time_ = t;

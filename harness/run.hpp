@@ -38,11 +38,11 @@ struct RunResult {
 // Throws InputError when dt <= 0, t_end <= 0, either is not finite, or t_end < dt.
 std::int64_t step_count(double t_end, double dt);
 
-// Blow-up rule: a run is unstable when any state component is NaN or infinite, or, in a
-// scene whose true motion conserves energy, its energy error exceeds 1e6 times the
-// initial energy scale (max of |E0| and the initial kinetic energy). Energy that a scene's
-// physics feeds in (an applied torque) is never taken for a blow-up. The run stops at
-// that step; its error metrics are NaN.
+// Blow-up rule: a run is unstable when any state component is NaN or infinite, or when
+// its energy E departs from E0 by more than 1e6 times the initial energy scale (max of
+// |E0| and the initial kinetic energy): either way in a conservative scene, upwards in a
+// damped one. Energy that a scene's physics feeds in (an applied torque) is never taken
+// for a blow-up. The run stops at that step (fail_step, fail_time); its error metrics are NaN.
 inline constexpr double blowup_energy_factor = 1e6;
 
 // The metrics that time a run (cpu_seconds, cpu_seconds_min, cpu_seconds_max,

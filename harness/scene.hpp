@@ -61,6 +61,9 @@ public:
     // energy_drift_max would measure physics, not error), the angular momentum only
     // without external torque.
     virtual bool conserves_energy() const { return true; }
+    // External work feeds energy in (an applied torque): energy growth is then physics, and
+    // only a NaN or Inf state counts as a blow-up. A damped scene only loses energy.
+    virtual bool gains_energy() const { return false; }
     // Scenes whose report shows the energy against time (the seed's Figures 8-11 for the
     // fibre): every scene whose true motion conserves it.
     bool reports_energy_series() const { return conserves_energy(); }

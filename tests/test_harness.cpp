@@ -106,6 +106,19 @@ TEST_CASE("a scheme that fails is recorded and the sweep goes on") {
     CHECK(results[3].value("steps") == 500);
 }
 
+TEST_CASE("a damped scene whose energy runs away upwards is stopped there, long before the state overflows") {
+    // test_explodes doubles |w| every step, so the kinetic energy grows 4x a step: it passes
+    // E0 + 1e6 x the energy scale within log4(1e6) ~ 10 steps of the rotational energy
+    // dominating, while |w| overflows to inf only after ~1000 doublings.
+    for (const double zeta : {0.0, 0.3}) {
+        INFO("zeta " << zeta);
+        const RunResult r = run_one({"ellipsoid_pair", "test_explodes", 1e-7, 0.0, {{"zeta", {zeta}}}}, {.measure_time = false});
+        CHECK(r.value("unstable") == 1);
+        CHECK(r.value("fail_step") < 40);
+        CHECK_THAT(r.failure, Catch::Contains("blew up at step"));
+    }
+}
+
 TEST_CASE("bad sweep inputs are rejected before anything runs, naming the valid ids") {
     try {
         plan_sweep({{"cylinder_fre"}, {}, {}, 0.0});

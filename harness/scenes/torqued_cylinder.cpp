@@ -42,6 +42,7 @@ public:
 
     ReferenceKind reference_kind() const override { return ReferenceKind::odeint; }
     bool conserves_energy() const override { return false; }  // the torque does work
+    bool gains_energy() const override { return true; }
     std::optional<Vec3> exact_omega_body(std::size_t, double t) const override {
         const Vec3 w0 = params.vec3("omega0");
         const double it = cylinder_.inertia.x(), ia = cylinder_.inertia.z();
