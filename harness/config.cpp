@@ -8,8 +8,9 @@
 
 namespace rotbench {
 
-SweepSpec load_config(const std::string& path) {
-    const toml::table root = parse_toml_file(path);
+namespace {
+
+SweepSpec config_from_toml(const toml::table& root, const std::string& path) {
     SweepSpec spec;
     for (auto&& [name, node] : root) {
         const std::string table_name(name.str());
@@ -41,6 +42,12 @@ SweepSpec load_config(const std::string& path) {
     }
     return spec;
 }
+
+}  // namespace
+
+SweepSpec load_config(const std::string& path) { return config_from_toml(parse_toml_file(path), path); }
+
+SweepSpec parse_config(std::string_view text, const std::string& name) { return config_from_toml(parse_toml_text(text, name), name); }
 
 void add_setting(SweepSpec& spec, const std::string& text) {
     const auto dot = text.find('.'), eq = text.find('=');

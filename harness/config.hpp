@@ -19,6 +19,8 @@
 namespace rotbench {
 
 SweepSpec load_config(const std::string& path);
+// The same for text already read; `name` stands for the file in messages.
+SweepSpec parse_config(std::string_view text, const std::string& name);
 
 // One `--set SCENE.KEY=VALUE` (VALUE: a number or a comma list), added to `spec`.
 void add_setting(SweepSpec& spec, const std::string& text);

@@ -175,10 +175,7 @@ GateOutcome judge_max(const GateCheck& c, const RunResult& r) {
     return o;
 }
 
-}  // namespace
-
-std::vector<GateCheck> load_gate(const std::string& path) {
-    const toml::table root = parse_toml_file(path);
+std::vector<GateCheck> gate_from_toml(const toml::table& root, const std::string& path) {
     std::vector<GateCheck> checks;
     for (auto&& [name, node] : root) {
         const std::string key(name.str());
@@ -189,6 +186,14 @@ std::vector<GateCheck> load_gate(const std::string& path) {
     }
     if (checks.empty()) throw InputError(path + ": no [[check]] in the gate file");
     return checks;
+}
+
+}  // namespace
+
+std::vector<GateCheck> load_gate(const std::string& path) { return gate_from_toml(parse_toml_file(path), path); }
+
+std::vector<GateCheck> parse_gate(std::string_view text, const std::string& name) {
+    return gate_from_toml(parse_toml_text(text, name), name);
 }
 
 GateResult run_gate(const std::vector<GateCheck>& checks, int jobs) {

@@ -24,6 +24,7 @@
 
 #include <functional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace rotbench {
@@ -45,6 +46,8 @@ struct GateCheck {
 
 // Reads and checks a gate file; every error names file, line and column (InputError).
 std::vector<GateCheck> load_gate(const std::string& path);
+// The same for text already read; `name` stands for the file in messages.
+std::vector<GateCheck> parse_gate(std::string_view text, const std::string& name);
 
 struct GateOutcome {
     std::size_t check = 0;  // index into the checks

@@ -1,6 +1,8 @@
 #include "harness/toml_input.hpp"
 
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 
 #include "harness/scene.hpp"
 
@@ -66,12 +68,17 @@ std::string text(const std::string& path, const std::string& key, const toml::no
 toml::table parse_toml_file(const std::string& path) {
     // toml++ reads a directory as an empty file: a sweep of everything, not an error.
     if (std::filesystem::is_directory(path)) throw InputError(path + ": cannot read the file (a directory)");
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw InputError(path + ": cannot read the file (File could not be opened for reading)");
+    const std::string text{std::istreambuf_iterator<char>(in), {}};
+    return parse_toml_text(text, path);
+}
+
+toml::table parse_toml_text(std::string_view text, const std::string& name) {
     try {
-        return toml::parse_file(path);
+        return toml::parse(text, name);
     } catch (const toml::parse_error& e) {
-        const std::string description(e.description());
-        if (e.source().begin.line == 0) throw InputError(path + ": cannot read the file (" + description + ")");
-        throw InputError(where(path, e.source()) + ": " + description);
+        throw InputError(where(name, e.source()) + ": " + std::string(e.description()));
     }
 }
 

@@ -6,6 +6,7 @@
 #include "harness/registry.hpp"
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <toml++/toml.h>
@@ -14,6 +15,8 @@ namespace rotbench {
 
 // The parsed file; a syntax error or an unreadable file is an InputError.
 toml::table parse_toml_file(const std::string& path);
+// The same for text already read; `name` stands for the file in messages.
+toml::table parse_toml_text(std::string_view text, const std::string& name);
 
 [[noreturn]] void toml_error(const std::string& path, const toml::node& node, const std::string& message);
 

@@ -1,0 +1,36 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer targets with clang, AddressSanitizer and UndefinedBehaviorSanitizer,
+# and runs each for SECONDS (default 60) from the kept corpus under tests/fuzz/corpus.
+# New inputs go to a scratch directory; pass --keep to add them to the kept corpus.
+# Prints one line per target: executions, seconds, new inputs, and the outcome. Exits 1
+# when a target crashes, hangs (more than 10 s on one input) or the sanitizers report;
+# libFuzzer leaves the input as crash-*/timeout-* in the build directory.
+#   usage: tests/fuzz/run.sh BUILD_DIR [SECONDS] [--keep]
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+build=${1:?usage: tests/fuzz/run.sh BUILD_DIR [SECONDS] [--keep]}
+build=$(mkdir -p "$build" && cd "$build" && pwd)
+root=$(pwd)
+seconds=${2:-60}
+keep=${3:-}
+flags="-O1 -g -fno-omit-frame-pointer -fsanitize=address,undefined,fuzzer-no-link -fno-sanitize-recover=all"
+cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_CXX_FLAGS="$flags" \
+  -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" -DROTBENCH_FUZZ=ON -DBUILD_TESTING=OFF > "$build.configure.log"
+cmake --build "$build" --target fuzz_config fuzz_gate fuzz_cli_values > "$build.build.log" 2>&1 || { tail -40 "$build.build.log"; exit 1; }
+status=0
+for target in config gate cli_values; do
+  corpus=$root/tests/fuzz/corpus/$target
+  scratch=$(mktemp -d)
+  new=$scratch
+  [ "$keep" = "--keep" ] && new=$corpus
+  log="$build/fuzz_$target.log"
+  result=ok
+  (cd "$build" && tests/fuzz/fuzz_$target -max_total_time="$seconds" -timeout=10 -rss_limit_mb=4096 -print_final_stats=1 \
+     -dict="$root/tests/fuzz/inputs.dict" "$new" "$corpus") > "$log" 2>&1 || { result=FAILED; status=1; }
+  runs=$(grep -o "stat::number_of_executed_units: *[0-9]*" "$log" | grep -o "[0-9]*$" || echo "?")
+  took=$(grep -o "stat::total_run_time: *[0-9]*\|Done [0-9]* runs in [0-9]* second" "$log" | grep -o "[0-9]*" | tail -1 || echo "?")
+  echo "fuzz_$target: $runs executions in ${seconds} s, $(ls "$new" | wc -l) inputs in the corpus written to, $result"
+  [ "$result" = ok ] || tail -30 "$log"
+  rm -rf "$scratch"
+done
+exit $status
