@@ -5,6 +5,7 @@
 #include <iterator>
 
 #include "harness/scene.hpp"
+#include "harness/toml_ascii.hpp"
 
 #include <cmath>
 #include <fmt/format.h>
@@ -75,8 +76,9 @@ toml::table parse_toml_file(const std::string& path) {
 }
 
 toml::table parse_toml_text(std::string_view text, const std::string& name) {
+    const std::string ascii = ascii_toml(text, name);  // what toml++ 3.3.0 reads safely
     try {
-        return toml::parse(text, name);
+        return toml::parse(ascii, name);
     } catch (const toml::parse_error& e) {
         throw InputError(where(name, e.source()) + ": " + std::string(e.description()));
     }

@@ -1,4 +1,5 @@
 #include "harness/config.hpp"
+#include "harness/gate.hpp"
 #include "harness/export.hpp"
 
 #include <catch2/catch.hpp>
@@ -80,4 +81,37 @@ TEST_CASE("reference and trajectory exports have the contract columns") {
     const std::string run = scheme_trajectory_csv(*scene, "zvw", 1e-2, 40);
     CHECK(run.rfind(std::string(trajectory_header) + "\n", 0) == 0);
     CHECK(std::count(run.begin(), run.end(), '\n') == 42);  // header + t = 0 + 40 rows (2000 steps, every 50th)
+}
+
+TEST_CASE("TOML text is made ASCII before Debian's toml++ 3.3.0 reads it, or refused with line and column") {
+    const auto message = [](const std::string& text) -> std::string {
+        try {
+            parse_config(text, "c.toml");
+        } catch (const InputError& e) {
+            return e.what();
+        }
+        return "";
+    };
+    // Inputs the fuzzer found or upstream reported (harness/toml_ascii.hpp).
+    CHECK(message("d\xef\xb9\xbf") == "c.toml:1:2: a non-ASCII character outside a string or comment");
+    CHECK(message("\xcc\xaa") == "c.toml:1:1: a non-ASCII character outside a string or comment");  // upstream #295
+    CHECK(message("\xcc") == "c.toml:1:1: the file is not valid UTF-8");
+    CHECK(message("[run]\nt_end = 1\n\xff") == "c.toml:3:1: the file is not valid UTF-8");
+    CHECK(message("[run]\nt_end = 1 # \xed\xa0\x80\n") == "c.toml:2:13: the file is not valid UTF-8");  // a surrogate
+    CHECK_THAT(message("s = '\xc2\xa7'\n"), Catch::StartsWith("c.toml:1:6: a non-ASCII character in a literal string"));
+    // b=1e1"...: toml++ reads on past the number into what looks like a string (fuzzer).
+    CHECK_THAT(message("b=1e1\"+ye\xd2\x93\xd2\x93\xd0\xb1" "a\xd2\x93" "a\":e\"\":"), Catch::StartsWith("c.toml:1:"));
+    // Where TOML allows non-ASCII text, the meaning is kept: comments, and basic strings
+    // (escaped), also right after a line-ending backslash (upstream #190).
+    CHECK(message("\xef\xbb\xbf# \xce\x94t \xe2\x86\x92 0\n[run]\nt_end = 1\n").empty());
+    CHECK_THAT(message("[dipole_top]\nfield = \"\xce\xbc \\t\xf0\x9f\x98\x80\"\n"), Catch::Contains("c.toml:2:9: 'field' must be a number"));
+    CHECK_THAT(message("[dipole_top]\nfield = \"\"\"\\\n\xc2\xa7\"\"\"\n"), Catch::Contains("c.toml:2:9: 'field' must be a number"));
+}
+
+TEST_CASE("a gate's why, written with non-ASCII text, reads back unchanged") {
+    const auto checks = parse_gate("[[check]]\nscene = \"asymmetric_free\"\nschemes = [\"direct\"]\nmin_order = 1\n"
+                                   "why = \"\xce\x94t \xe2\x86\x92 0: \xcf\x89 error ~ \xce\x94t \xf0\x9f\x98\x80\"  # \xce\xb1\n",
+                                   "g.toml");
+    REQUIRE(checks.size() == 1);
+    CHECK(checks[0].why == "\xce\x94t \xe2\x86\x92 0: \xcf\x89 error ~ \xce\x94t \xf0\x9f\x98\x80");
 }
