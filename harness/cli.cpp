@@ -185,7 +185,10 @@ int run_cli_arguments(const std::vector<std::string>& arguments, std::ostream& o
             throw InputError(std::string("unknown command '") + argv[1] + "'; valid commands: " + join(commands, ", "));
         app.parse(argc, argv.data());
         refuse_empty_values(app);
-        if (*run_cmd && !o.resume.empty()) return resume(app, *run_cmd, o.resume, out, err);
+        if (*run_cmd && !o.resume.empty()) {
+            if (resuming) throw InputError("--resume: " + (*resuming / "partial" / "command").string() + " holds --resume itself");
+            return resume(app, *run_cmd, o.resume, out, err);
+        }
         for (const auto& plugin : plugins) {
             const auto ids = load_plugin(plugin);
             err << "rotbench: loaded " << join(ids, ", ") << " from " << plugin << "\n";
