@@ -2,7 +2,7 @@
 # Builds the libFuzzer targets with clang, AddressSanitizer and UndefinedBehaviorSanitizer,
 # and runs each for SECONDS (default 60) from the kept corpus under tests/fuzz/corpus.
 # New inputs go to a scratch directory; pass --keep to add them to the kept corpus.
-# Prints one line per target: executions, seconds, new inputs, and the outcome. Exits 1
+# Prints one line per target: executions, seconds, corpus, new inputs, and the outcome. Exits 1
 # when a target crashes, hangs (more than 10 s on one input) or the sanitizers report;
 # libFuzzer leaves the input as crash-*/timeout-* in the build directory.
 #   usage: tests/fuzz/run.sh BUILD_DIR [SECONDS] [--keep]
@@ -17,7 +17,7 @@ keep=${3:-}
 # stay, and UBSan reports them.
 flags="-O1 -g -fno-omit-frame-pointer -fsanitize=address,undefined,fuzzer-no-link -fno-sanitize-recover=all -DROTBENCH_TOML_NO_ASSERT"
 cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_COMPILER=clang++-14 -DCMAKE_CXX_FLAGS="$flags" \
-  -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" -DROTBENCH_FUZZ=ON > "$build.configure.log"
+  -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" -DROTBENCH_FUZZ=ON -DBUILD_TESTING=OFF > "$build.configure.log"
 cmake --build "$build" --target fuzz_config fuzz_gate fuzz_cli_values > "$build.build.log" 2>&1 || { tail -40 "$build.build.log"; exit 1; }
 status=0
 for target in config gate cli_values; do
@@ -31,7 +31,8 @@ for target in config gate cli_values; do
      -dict="$root/tests/fuzz/inputs.dict" "$new" "$corpus") > "$log" 2>&1 || { result=FAILED; status=1; }
   runs=$(grep -o "stat::number_of_executed_units: *[0-9]*" "$log" | grep -o "[0-9]*$" || echo "?")
   took=$(grep -o "stat::total_run_time: *[0-9]*\|Done [0-9]* runs in [0-9]* second" "$log" | grep -o "[0-9]*" | tail -1 || echo "?")
-  echo "fuzz_$target: $runs executions in ${seconds} s, $(ls "$new" | wc -l) inputs in the corpus written to, $result"
+  if [ "$keep" = "--keep" ]; then grown="kept corpus now $(ls "$new" | wc -l) inputs"; else grown="$(ls "$new" | wc -l) new inputs (not kept)"; fi
+  echo "fuzz_$target: $runs executions in ${seconds} s from $(ls "$corpus" | wc -l) kept inputs, $grown, $result"
   [ "$result" = ok ] || tail -30 "$log"
   rm -rf "$scratch"
 done
