@@ -7,19 +7,15 @@
 #include "harness/parse.hpp"
 #include "harness/plugin.hpp"
 #include "harness/run_command.hpp"
-#include "harness/shard.hpp"
 #include "harness/stability_study.hpp"
 #include "harness/sweep.hpp"
-#include "reports/energy_series.hpp"
 #include "reports/gate_report.hpp"
 #include "reports/markdown_report.hpp"
-#include "reports/orders.hpp"
 #include "reports/output_files.hpp"
 #include "reports/results_csv.hpp"
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
-#include <thread>
 #include <filesystem>
 #include <fmt/format.h>
 
@@ -147,7 +143,7 @@ int run_cli_arguments(const std::vector<std::string>& arguments, std::ostream& o
     std::string stab_scenes = "sphere_pair,ellipsoid_pair,fast_spin", stab_schemes, stab_zetas = "0,0.1,0.3,0.5",
                 stab_omegas = "10,100,1000", stab_out = "rotbench-stability";
     bool stab_overwrite = false;
-    int stab_jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    int stab_jobs = RunOptionsText::default_jobs();
     stability_cmd->add_option("--scenes", stab_scenes, "contact scenes")->capture_default_str();
     stability_cmd->add_option("--schemes", stab_schemes, "comma list of scheme ids (default: all)");
     stability_cmd->add_option("--zeta", stab_zetas, "damping ratios (contact scenes)")->capture_default_str();
