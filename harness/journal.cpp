@@ -7,7 +7,6 @@
 
 #include <atomic>
 #include <fmt/format.h>
-#include <fstream>
 #include <unistd.h>
 
 namespace rotbench {
@@ -18,9 +17,9 @@ namespace {
 fs::path journal_dir(const fs::path& out_dir) { return out_dir / "partial"; }
 
 std::string read_text(const fs::path& path) {
-    std::ifstream in(path);
-    if (!in) throw InputError("cannot read " + path.string());
-    return {std::istreambuf_iterator<char>(in), {}};
+    auto text = read_file(path);
+    if (!text) throw InputError("cannot read " + path.string());
+    return std::move(*text);
 }
 
 std::string plan_line(const std::string& plan_id, std::size_t plan_size) { return fmt::format("{} {}\n", plan_id, plan_size); }

@@ -184,12 +184,8 @@ RunResult run_one(const RunSpec& requested, const RunOptions& options) {
         unstable = true;
     }
 
-    if (interrupt_signal()) {
-        result.interrupted = true;
-        return result;
-    }
     CpuTiming cpu{nan, nan, nan, 0};
-    if (!unstable && options.measure_time) {
+    if (!unstable && options.measure_time && !interrupt_signal()) {
         // Timing run: the same loop without the observer, so the reference solution and
         // the metrics are not charged to the scheme.
         cpu = median_cpu_seconds([&] {
@@ -199,7 +195,7 @@ RunResult run_one(const RunSpec& requested, const RunOptions& options) {
             simulate(*scene, *scheme, bodies, dt, steps, evals, [](std::int64_t, double, const Bodies&) { return !interrupt_signal(); });
         });
     }
-    if (interrupt_signal()) {
+    if (interrupt_signal()) {  // the run or its timing was cut short: not a result
         result.interrupted = true;
         return result;
     }

@@ -48,7 +48,7 @@ void add_run_options(CLI::App& cmd, RunOptionsText& o) {
     cmd.add_option("--config", o.config, "TOML file with [run] selections and [SCENE] parameters");
     cmd.add_flag("--quick", o.quick, "each scene's short ladder of time steps (for CI)");
     cmd.add_option("--shard", o.shard, "K/N: run only the K-th of N deterministic slices (combine with merge)");
-    cmd.add_option("--resume", o.resume, "DIR: finish the interrupted run in DIR (only --jobs may be given with it)");
+    cmd.add_option("--resume", o.resume, "DIR: finish the interrupted run in DIR (with its own options; no other may be given)");
     cmd.add_option("--jobs", o.jobs, "runs in parallel (results do not depend on it)")
         ->capture_default_str()
         ->check(CLI::Range(1, max_jobs));
@@ -115,8 +115,9 @@ int run_command(const RunOptionsText& o, const std::vector<std::string>& argumen
         const auto finished = journal.finished();
         for (std::size_t i = 0; i < plan.size(); ++i)
             if (!finished.count(i)) todo.push_back(plan[i]), todo_index.push_back(i);
-        if (resuming) out << fmt::format("resuming: {} of {} runs were finished\n", plan.size() - todo.size(), plan.size());
+        if (resuming) out << fmt::format("resuming: {} of {} runs were finished\n", finished.size(), plan.size());
     }
+    std::size_t kept = plan.size() - todo.size();  // runs in the journal
     RunOptions options;
     options.series_samples = o.energy_series;
     {
@@ -125,6 +126,7 @@ int run_command(const RunOptionsText& o, const std::vector<std::string>& argumen
             todo, options,
             [&](std::size_t i, const RunResult& r) {
                 journal.record(todo_index[i], r);
+                ++kept;
                 out << fmt::format("{:<16} {:<16} dt={:<10g} {}\n", r.spec.scene, r.spec.scheme, r.spec.dt,
                                    r.failure.empty() ? "ok" : "FAILED: " + r.failure);
             },
@@ -132,7 +134,7 @@ int run_command(const RunOptionsText& o, const std::vector<std::string>& argumen
         if (const int signal = interrupt_signal()) {
             err << fmt::format("rotbench: interrupted by signal {}: {} of {} runs are kept in {}; rotbench run --resume {} "
                                "finishes the sweep\n",
-                               signal, journal.finished().size(), plan.size(), (dir / "partial").string(), dir.string());
+                               signal, kept, plan.size(), (dir / "partial").string(), dir.string());
             return 128 + signal;
         }
     }

@@ -1,13 +1,11 @@
 #include "harness/toml_input.hpp"
 
-#include <filesystem>
-#include <fstream>
-#include <iterator>
-
 #include "harness/scene.hpp"
 #include "harness/toml_ascii.hpp"
+#include "reports/output_files.hpp"
 
 #include <cmath>
+#include <filesystem>
 #include <fmt/format.h>
 
 namespace rotbench {
@@ -69,10 +67,9 @@ std::string text(const std::string& path, const std::string& key, const toml::no
 toml::table parse_toml_file(const std::string& path) {
     // toml++ reads a directory as an empty file: a sweep of everything, not an error.
     if (std::filesystem::is_directory(path)) throw InputError(path + ": cannot read the file (a directory)");
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw InputError(path + ": cannot read the file (File could not be opened for reading)");
-    const std::string text{std::istreambuf_iterator<char>(in), {}};
-    return parse_toml_text(text, path);
+    const auto text = read_file(path);
+    if (!text) throw InputError(path + ": cannot read the file (File could not be opened for reading)");
+    return parse_toml_text(*text, path);
 }
 
 toml::table parse_toml_text(std::string_view text, const std::string& name) {

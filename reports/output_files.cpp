@@ -6,6 +6,7 @@
 #include <cmath>
 #include <fmt/format.h>
 #include <fstream>
+#include <iterator>
 #include <unistd.h>
 
 namespace rotbench {
@@ -25,6 +26,12 @@ void write_file_atomically(const std::filesystem::path& path, const std::string&
     std::error_code ec;
     std::filesystem::rename(temporary, path, ec);
     if (ec) throw InputError("cannot write " + path.string() + ": " + ec.message());
+}
+
+std::optional<std::string> read_file(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return std::nullopt;
+    return std::string{std::istreambuf_iterator<char>(in), {}};
 }
 
 std::string format_number(double value) {

@@ -3,11 +3,15 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <string>
 
 namespace rotbench {
 
 void write_file_atomically(const std::filesystem::path& path, const std::string& content);
+
+// The whole file as it is on disk, or nothing when it cannot be opened.
+std::optional<std::string> read_file(const std::filesystem::path& path);
 
 // A number in the shortest form that reads back to the same double; "nan", "inf", "-inf".
 std::string format_number(double value);

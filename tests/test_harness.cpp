@@ -1,13 +1,10 @@
-#include "harness/cli.hpp"
 #include "harness/sweep.hpp"
+#include "tests/cli_helpers.hpp"
 #include "schemes/quaternion.hpp"
 
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
-#include <unistd.h>
 #include <cstring>
 #include <limits>
 #include <stdexcept>
@@ -164,21 +161,14 @@ TEST_CASE("the option --jobs does not change the results: bit-identical apart fr
 }
 
 TEST_CASE("a sweep with a run that blows up finishes, and its report says which run failed, where and why") {
-    const fs::path dir = fs::temp_directory_path() / ("rotbench_test_blowup_" + std::to_string(::getpid()));
-    fs::remove_all(dir);
-    std::vector<std::string> args = {"rotbench", "run", "--scenes", "cylinder_free", "--schemes", "test_explodes,direct",
-                                     "--dt", "1e-3", "--out", dir.string()};
-    std::vector<const char*> argv;
-    for (const auto& a : args) argv.push_back(a.c_str());
-    std::ostringstream out, err;
-    REQUIRE(run_cli(static_cast<int>(argv.size()), argv.data(), out, err) == 0);
-    const std::string report = [&] {
-        std::ifstream in(dir / "report.md");
-        return std::string{std::istreambuf_iterator<char>(in), {}};
-    }();
+    const fs::path dir = test::fresh_dir("blowup");
+    const test::Cli r = test::cli({"run", "--scenes", "cylinder_free", "--schemes", "test_explodes,direct", "--dt", "1e-3",
+                                   "--out", dir.string()});
+    REQUIRE(r.status == 0);
+    const std::string report = test::read(dir / "report.md");
     CHECK_THAT(report, Catch::Contains("2 runs, 1 unstable or failed."));
     // |w| doubles per step: E passes E0 + 1e6 x E0 first at step 10 (see above).
     CHECK_THAT(report, Catch::Contains("- **test_explodes at dt = 0.001 failed**: blew up at step 10 (t = 0.01 s)."));
-    CHECK_THAT(out.str(), Catch::Contains("FAILED: blew up at step 10"));
+    CHECK_THAT(r.out, Catch::Contains("FAILED: blew up at step 10"));
     fs::remove_all(dir);
 }

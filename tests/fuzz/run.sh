@@ -30,7 +30,6 @@ for target in config gate cli_values; do
   (cd "$build" && tests/fuzz/fuzz_$target -max_total_time="$seconds" -timeout=10 -rss_limit_mb=4096 -print_final_stats=1 \
      -dict="$root/tests/fuzz/inputs.dict" "$new" "$corpus") > "$log" 2>&1 || { result=FAILED; status=1; }
   runs=$(grep -o "stat::number_of_executed_units: *[0-9]*" "$log" | grep -o "[0-9]*$" || echo "?")
-  took=$(grep -o "stat::total_run_time: *[0-9]*\|Done [0-9]* runs in [0-9]* second" "$log" | grep -o "[0-9]*" | tail -1 || echo "?")
   if [ "$keep" = "--keep" ]; then grown="kept corpus now $(ls "$new" | wc -l) inputs"; else grown="$(ls "$new" | wc -l) new inputs (not kept)"; fi
   echo "fuzz_$target: $runs executions in ${seconds} s from $(ls "$corpus" | wc -l) kept inputs, $grown, $result"
   [ "$result" = ok ] || tail -30 "$log"
