@@ -63,9 +63,11 @@ RunResult run_one(const RunSpec& spec, const RunOptions& options = {});
 
 // The loop shared by the measured run and the timing run. The scheme cannot reach the
 // scene: the one force evaluation per step happens here, and here it is counted.
+// `bodies` is the state at step `first_step`; the loop makes `steps` steps from there and
+// returns the index of the last step made (the observer may stop it early).
 template <class Observer>
 std::int64_t simulate(const Scene& scene, RotationScheme& scheme, Bodies& bodies, double dt, std::int64_t steps,
-                      std::int64_t& force_evals, Observer&& observe);
+                      std::int64_t& force_evals, Observer&& observe, std::int64_t first_step = 0);
 
 }  // namespace rotbench
 

@@ -5,11 +5,11 @@ namespace rotbench {
 
 template <class Observer>
 std::int64_t simulate(const Scene& scene, RotationScheme& scheme, Bodies& bodies, double dt, std::int64_t steps,
-                      std::int64_t& force_evals, Observer&& observe) {
-    scene.evaluate_forces(bodies, 0.0);
+                      std::int64_t& force_evals, Observer&& observe, std::int64_t first_step) {
+    scene.evaluate_forces(bodies, static_cast<double>(first_step) * dt);
     ++force_evals;
     scheme.start(bodies);
-    for (std::int64_t n = 1; n <= steps; ++n) {
+    for (std::int64_t n = first_step + 1; n <= first_step + steps; ++n) {
         const double t = static_cast<double>(n) * dt;
         translation_predict(bodies, dt);
         scheme.predict(bodies, dt);
@@ -19,7 +19,7 @@ std::int64_t simulate(const Scene& scene, RotationScheme& scheme, Bodies& bodies
         scheme.correct(bodies, dt);
         if (!observe(n, t, bodies)) return n;
     }
-    return steps;
+    return first_step + steps;
 }
 
 }  // namespace rotbench

@@ -23,7 +23,7 @@ struct CpuTiming {
 // A call that takes longer than `long_call` seconds is its own warm-up and sample: its
 // start-up costs are amortised, and repeating it would only spend time.
 template <class Work>
-CpuTiming median_cpu_seconds(Work&& work, int min_repeats = 3, double min_total = 0.05, double long_call = 0.5) {
+CpuTiming median_cpu_seconds(Work&& work, int min_repeats = 3, double min_total = 0.01, double long_call = 0.5) {
     const double first_start = thread_cpu_seconds();
     work();
     const double first = thread_cpu_seconds() - first_start;

@@ -5,13 +5,12 @@
 #include "references/odeint_reference.hpp"
 
 #include "references/reference_cache.hpp"
+#include "references/shared_trajectory.hpp"
 #include "schemes/quaternion.hpp"
 
 #include <algorithm>
 #include <boost/numeric/odeint.hpp>
 #include <fmt/format.h>
-#include <map>
-#include <mutex>
 #include <limits>
 #include <optional>
 
@@ -196,24 +195,15 @@ Trajectory integrate_scene(const Scene& scene, const std::vector<double>& times,
 std::shared_ptr<const Trajectory> odeint_reference(const Scene& scene, double dt, std::int64_t steps) {
     const std::string key = fmt::format("odeint-fehlberg78|tol={}|dt={}|steps={}|{}", reference_tolerance, dt, steps,
                                         scene.params.canonical());
-    static std::mutex mutex;
-    static std::map<std::string, std::shared_ptr<const Trajectory>> memory;
-    {
-        std::lock_guard lock(mutex);
-        if (auto it = memory.find(key); it != memory.end()) return it->second;
-    }
-    const std::string& scene_id = scene.params.owner();
-    std::shared_ptr<const Trajectory> trajectory;
-    if (auto cached = load_cached(scene_id, key)) {
-        trajectory = std::make_shared<const Trajectory>(std::move(*cached));
-    } else {
+    return shared_trajectory(key, [&] {
+        const std::string& scene_id = scene.params.owner();
+        if (auto cached = load_cached(scene_id, key)) return std::move(*cached);
         std::vector<double> times(static_cast<std::size_t>(steps) + 1);
         for (std::size_t k = 0; k < times.size(); ++k) times[k] = static_cast<double>(k) * dt;  // as the run loop
-        trajectory = std::make_shared<const Trajectory>(integrate_scene(scene, times, OdeMethod::fehlberg78));
-        store_cached(scene_id, key, *trajectory);
-    }
-    std::lock_guard lock(mutex);
-    return memory.emplace(key, trajectory).first->second;
+        Trajectory trajectory = integrate_scene(scene, times, OdeMethod::fehlberg78);
+        store_cached(scene_id, key, trajectory);
+        return trajectory;
+    });
 }
 
 std::vector<double> equally_spaced_times(double t_end, int samples) {

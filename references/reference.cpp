@@ -1,17 +1,41 @@
 #include "references/reference.hpp"
 
 #include "references/odeint_reference.hpp"
+#include "references/shared_trajectory.hpp"
+
+#include <fmt/format.h>
 
 namespace rotbench {
 namespace {
 
+// The closed form evaluated at every step t_k = k dt, once for all the schemes of a sweep
+// (references/shared_trajectory.hpp): elliptic integrals at every step were about 40 % of a
+// cylinder_free run, the same values for every scheme.
 class ClosedFormReference final : public Reference {
 public:
-    explicit ClosedFormReference(const Scene& scene) : scene_(scene) {}
-    ReferenceState at(std::size_t body, std::int64_t, double t) const override { return scene_.exact(body, t); }
+    ClosedFormReference(const Scene& scene, double dt, std::int64_t steps) {
+        const std::string key = fmt::format("closed-form|{}|dt={}|steps={}|{}", scene.params.owner(), dt, steps,
+                                            scene.params.canonical());
+        trajectory_ = shared_trajectory(key, [&] {
+            Trajectory t;
+            t.bodies = scene.initial_state().size();
+            t.values.resize(static_cast<std::size_t>(steps + 1) * t.bodies * Trajectory::width);
+            for (std::int64_t k = 0; k <= steps; ++k)
+                for (std::size_t body = 0; body < t.bodies; ++body) {
+                    const ReferenceState s = scene.exact(body, static_cast<double>(k) * dt);  // t as the run loop
+                    double* v = &t.values[(static_cast<std::size_t>(k) * t.bodies + body) * Trajectory::width];
+                    v[0] = s.q.w(), v[1] = s.q.x(), v[2] = s.q.y(), v[3] = s.q.z();
+                    v[4] = s.omega.x(), v[5] = s.omega.y(), v[6] = s.omega.z();
+                }
+            return t;
+        });
+    }
+    ReferenceState at(std::size_t body, std::int64_t step, double) const override {
+        return trajectory_->state(static_cast<std::size_t>(step), body);
+    }
 
 private:
-    const Scene& scene_;
+    std::shared_ptr<const Trajectory> trajectory_;
 };
 
 class SampledReference final : public Reference {
@@ -33,7 +57,7 @@ private:
 
 std::unique_ptr<Reference> make_reference(const Scene& scene, double dt, std::int64_t steps) {
     switch (scene.reference_kind()) {
-        case Scene::ReferenceKind::closed_form: return std::make_unique<ClosedFormReference>(scene);
+        case Scene::ReferenceKind::closed_form: return std::make_unique<ClosedFormReference>(scene, dt, steps);
         case Scene::ReferenceKind::odeint:
             return std::make_unique<SampledReference>(scene, odeint_reference(scene, dt, steps));
         case Scene::ReferenceKind::none: break;

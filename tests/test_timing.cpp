@@ -1,0 +1,58 @@
+// How runs are timed and what they share: the timing sample and the shared references.
+#include "harness/run.hpp"
+#include "references/shared_trajectory.hpp"
+
+#include <atomic>
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <stdexcept>
+#include <thread>
+
+using namespace rotbench;
+
+TEST_CASE("a run of more than 1e5 steps is timed on 32 stretches of 3125 steps, a shorter one whole") {
+    const RunResult long_run = run_one({"asymmetric_free", "direct", 1e-4, 12.0});  // 120 000 steps
+    CHECK(long_run.value("steps") == 120000);
+    CHECK(long_run.value("timed_steps") == 32 * 3125);
+    const RunResult short_run = run_one({"asymmetric_free", "direct", 1e-2, 0.0});
+    CHECK(short_run.value("timed_steps") == short_run.value("steps"));
+    for (const RunResult* r : {&long_run, &short_run}) {
+        CHECK(r->value("timing_repeats") >= 3);
+        CHECK(r->value("cpu_seconds") > 0.0);
+        CHECK(r->value("cpu_seconds_min") <= r->value("cpu_seconds"));
+        CHECK(r->value("cpu_seconds") <= r->value("cpu_seconds_max"));
+        // Scaled to the whole run: ns_per_step is cpu_seconds over all the steps, not the timed ones.
+        CHECK(r->value("ns_per_step") == Approx(r->value("cpu_seconds") / r->value("steps") * 1e9).epsilon(1e-12));
+    }
+}
+
+TEST_CASE("a reference trajectory is computed once per key, even when runs ask for it at the same time") {
+    std::atomic<int> computed = 0;
+    const auto compute = [&] {
+        ++computed;
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));  // long enough for the other thread to ask meanwhile
+        Trajectory t;
+        t.bodies = 1;
+        t.values.assign(Trajectory::width, 1.0);
+        return t;
+    };
+    std::shared_ptr<const Trajectory> a, b;
+    std::thread other([&] { a = shared_trajectory("test|shared-once", compute); });
+    b = shared_trajectory("test|shared-once", compute);
+    other.join();
+    CHECK(computed == 1);
+    CHECK(a == b);
+    CHECK(shared_trajectory("test|shared-other", compute) != a);
+    CHECK(computed == 2);
+}
+
+TEST_CASE("a reference that fails to compute is not kept: the caller gets the error, a later run tries again") {
+    int attempts = 0;
+    const auto failing = [&]() -> Trajectory {
+        ++attempts;
+        throw std::runtime_error("no progress");
+    };
+    CHECK_THROWS_WITH(shared_trajectory("test|fails", failing), "no progress");
+    CHECK_THROWS_WITH(shared_trajectory("test|fails", failing), "no progress");
+    CHECK(attempts == 2);
+}
