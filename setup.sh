@@ -7,7 +7,7 @@
 set -euo pipefail
 cd "$(dirname "$0")"
 
-packages=(cmake ninja-build g++ libeigen3-dev catch2 libbenchmark-dev valgrind libboost-dev libgsl-dev libfmt-dev
+packages=(cmake ninja-build g++ libeigen3-dev libxsimd-dev catch2 libbenchmark-dev valgrind libboost-dev libgsl-dev libfmt-dev
           libcli11-dev libtomlplusplus-dev gnuplot-nox)
 
 missing=()

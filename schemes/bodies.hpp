@@ -2,15 +2,15 @@
 // kernel serves a one-body scene and a million-body batch alike (DESIGN.md "Core model").
 #pragma once
 
-#include <Eigen/Core>
-#include <Eigen/Geometry>
+#include "schemes/simd.hpp"
+
 #include <cstddef>
 #include <vector>
 
 namespace rotbench {
 
-using Vec3 = Eigen::Vector3d;
-using Quat = Eigen::Quaterniond;
+using Vec3 = Vec3T<double>;
+using Quat = QuatT<double>;
 
 // One 3-vector per body, one array per component.
 struct Vec3Array {

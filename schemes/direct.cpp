@@ -22,33 +22,35 @@ namespace rotbench {
 namespace {
 
 // The body-frame acceleration of eqs. 34 and 41, with or without the gyroscopic term.
-template <bool Gyroscopic>
-Vec3 acceleration(const Vec3& omega_body, const Vec3& torque_body, const Vec3& inertia) {
+template <bool Gyroscopic, class S>
+ROTBENCH_INLINE Vec3T<S> acceleration(const Vec3T<S>& omega_body, const Vec3T<S>& torque_body, const Vec3T<S>& inertia) {
     if constexpr (Gyroscopic) return euler_acceleration(omega_body, torque_body, inertia);
     return torque_body.cwiseQuotient(inertia);
 }
 
-template <bool Gyroscopic>
+template <bool Gyroscopic, class S = double>
 struct Direct {
+    template <class T>
+    using rebind = Direct<Gyroscopic, T>;
     struct Memory {
-        Quat q_start;  // q^n, the frame of the corrector
+        QuatT<S> q_start;  // q^n, the frame of the corrector
     };
 
-    static void start(const RigidBody&, Memory&) {}
+    static void start(const RigidBodyT<S>&, Memory&) {}
 
-    static void predict(RigidBody& b, Memory& m, double dt) {
+    static void predict(RigidBodyT<S>& b, Memory& m, double dt) {
         m.q_start = b.q;
-        const Vec3 torque_body = to_body(b.q, b.torque);                        // eq. 33
-        const Vec3 alpha_body = acceleration<Gyroscopic>(to_body(b.q, b.omega), torque_body, b.inertia);  // eq. 34
+        const Vec3T<S> torque_body = to_body(b.q, b.torque);                    // eq. 33
+        const Vec3T<S> alpha_body = acceleration<Gyroscopic, S>(to_body(b.q, b.omega), torque_body, b.inertia);  // eq. 34
         b.omega += 0.5 * dt * to_world(b.q, alpha_body);                        // eqs. 35-36
-        b.q = rotation_increment(b.omega, dt) * b.q;                            // eqs. 37, 39
+        b.q = rotation_increment<S>(b.omega, dt) * b.q;                         // eqs. 37, 39
     }
 
-    static void correct(RigidBody& b, Memory& m, double dt) {
-        const Quat& frame = m.q_start;
-        const Vec3 torque_body = to_body(frame, b.torque);                      // eq. 40
-        const Vec3 omega_body = to_body(frame, b.omega);                        // w'^{n+1} ~ w'^{n+1/2}
-        const Vec3 alpha_body = acceleration<Gyroscopic>(omega_body, torque_body, b.inertia);  // eq. 41
+    static void correct(RigidBodyT<S>& b, Memory& m, double dt) {
+        const QuatT<S>& frame = m.q_start;
+        const Vec3T<S> torque_body = to_body(frame, b.torque);                  // eq. 40
+        const Vec3T<S> omega_body = to_body(frame, b.omega);                    // w'^{n+1} ~ w'^{n+1/2}
+        const Vec3T<S> alpha_body = acceleration<Gyroscopic, S>(omega_body, torque_body, b.inertia);  // eq. 41
         b.omega += 0.5 * dt * to_world(frame, alpha_body);                      // eqs. 42-43
     }
 };

@@ -16,32 +16,37 @@
 namespace rotbench {
 
 struct ExactIncrement {
-    static Quat map(const Vec3& omega, double dt) { return rotation_increment(omega, dt); }
+    static constexpr bool steps_packs = true;  // a template on the scalar: serves packs of bodies too
+    template <class S>
+    static QuatT<S> map(const Vec3T<S>& omega, double dt) { return rotation_increment<S>(omega, dt); }
 };
 
-template <class Increment = ExactIncrement>
+template <class Increment = ExactIncrement, class S = double>
 struct MunjizaRk4 {
+    template <class T>
+        requires(Increment::steps_packs)
+    using rebind = MunjizaRk4<Increment, T>;
     struct Memory {
-        Vec3 momentum;  // H, world frame
+        Vec3T<S> momentum;  // H, world frame
     };
 
-    static void start(const RigidBody& b, Memory& m) {
+    static void start(const RigidBodyT<S>& b, Memory& m) {
         m.momentum = momentum_from_omega(b.q, b.inertia, b.omega);
     }
 
-    static void predict(RigidBody& b, Memory& m, double dt) {
+    static void predict(RigidBodyT<S>& b, Memory& m, double dt) {
         m.momentum += dt * b.torque;                                            // eq. 44
-        const Vec3& H = m.momentum;
-        const Vec3 w1 = b.omega;                                                // eq. 46
-        const Vec3 w2 = omega_from_momentum(Increment::map(w1, 0.5 * dt) * b.q, b.inertia, H);  // eq. 47
-        const Vec3 w3 = omega_from_momentum(Increment::map(w2, 0.5 * dt) * b.q, b.inertia, H);  // eq. 48
-        const Vec3 w4 = omega_from_momentum(Increment::map(w3, dt) * b.q, b.inertia, H);        // eq. 49
-        const Vec3 w_mean = (w1 + 2.0 * w2 + 2.0 * w3 + w4) / 6.0;              // eq. 50
+        const Vec3T<S>& H = m.momentum;
+        const Vec3T<S> w1 = b.omega;                                            // eq. 46
+        const Vec3T<S> w2 = omega_from_momentum(Increment::map(w1, 0.5 * dt) * b.q, b.inertia, H);  // eq. 47
+        const Vec3T<S> w3 = omega_from_momentum(Increment::map(w2, 0.5 * dt) * b.q, b.inertia, H);  // eq. 48
+        const Vec3T<S> w4 = omega_from_momentum(Increment::map(w3, dt) * b.q, b.inertia, H);        // eq. 49
+        const Vec3T<S> w_mean = (w1 + 2.0 * w2 + 2.0 * w3 + w4) / 6.0;          // eq. 50
         b.q = Increment::map(w_mean, dt) * b.q;                                 // eqs. 51, 53
         b.omega = omega_from_momentum(b.q, b.inertia, H);                       // eq. 52
     }
 
-    static void correct(RigidBody&, Memory&, double) {}
+    static void correct(RigidBodyT<S>&, Memory&, double) {}
 };
 
 }  // namespace rotbench

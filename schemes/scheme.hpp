@@ -14,6 +14,7 @@
 
 #include <memory>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace rotbench {
@@ -45,51 +46,119 @@ struct SchemeClaims {
 
 using SchemeRegistry = Registry<RotationScheme, SchemeClaims>;
 
-// The state one scheme kernel sees for one body: read from the arrays, written back.
-struct RigidBody {
-    Vec3 inertia;  // principal moments
-    Quat q;        // orientation, body -> world
-    Vec3 omega;    // world angular velocity
-    Vec3 torque;   // world torque, from the last force evaluation
+// The state one scheme kernel sees for one body (S = double), or for a pack of bodies
+// (S = Pack, schemes/simd.hpp): read from the arrays, written back.
+template <class S>
+struct RigidBodyT {
+    Vec3T<S> inertia;  // principal moments
+    QuatT<S> q;        // orientation, body -> world
+    Vec3T<S> omega;    // world angular velocity
+    Vec3T<S> torque;   // world torque, from the last force evaluation
 };
+using RigidBody = RigidBodyT<double>;
+
+// A kernel that can step a pack of bodies: it is a template on its scalar and names its
+// instantiation for any other one, `template <class T> using rebind = Kernel<..., T>`.
+template <class Kernel>
+concept PackKernel = bool(ROTBENCH_SIMD) && requires { typename Kernel::template rebind<double>; };
 
 // Adapts a per-body kernel to the array interface. A kernel is a small type with
 //   struct Memory;                                  per-body values kept between phases
 //   static void start(const RigidBody&, Memory&);
 //   static void predict(RigidBody&, Memory&, double dt);
 //   static void correct(RigidBody&, Memory&, double dt);
-// The loops below call the kernel directly: no virtual call or allocation per body.
+// The loops below call the kernel directly: no virtual call or allocation per body. A
+// PackKernel steps whole packs of bodies with its pack instantiation, read straight from the
+// arrays, and the remaining bodies (all of them in a scene of fewer bodies than a pack) one
+// by one with its double instantiation.
 template <class Kernel>
 class BatchedScheme final : public RotationScheme {
 public:
     void start(const Bodies& b) override {
-        memory_.assign(b.size(), typename Kernel::Memory{});
-        for (std::size_t i = 0; i < b.size(); ++i) Kernel::start(load(b, i), memory_[i]);
-    }
-    void predict(Bodies& b, double dt) override {
-        for (std::size_t i = 0; i < b.size(); ++i) {
-            RigidBody body = load(b, i);
-            Kernel::predict(body, memory_[i], dt);
-            store(b, i, body);
+        const std::size_t packs = pack_count(b);
+#if ROTBENCH_SIMD
+        if constexpr (PackKernel<Kernel>) {
+            pack_memory_.assign(packs, typename PackOf::Memory{});
+            for (std::size_t p = 0; p < packs; ++p) PackOf::start(load<Pack>(b, p * width), pack_memory_[p]);
         }
+#endif
+        memory_.assign(b.size() - packs * width, typename Kernel::Memory{});
+        for (std::size_t i = packs * width; i < b.size(); ++i) Kernel::start(load<double>(b, i), memory_[i - packs * width]);
     }
-    void correct(Bodies& b, double dt) override {
-        for (std::size_t i = 0; i < b.size(); ++i) {
-            RigidBody body = load(b, i);
-            Kernel::correct(body, memory_[i], dt);
+    void predict(Bodies& b, double dt) override { step(b, dt, [](auto& body, auto& m, double h, auto kernel) { decltype(kernel)::type::predict(body, m, h); }); }
+    void correct(Bodies& b, double dt) override { step(b, dt, [](auto& body, auto& m, double h, auto kernel) { decltype(kernel)::type::correct(body, m, h); }); }
+
+private:
+    template <class K>
+    struct Tag {
+        using type = K;
+    };
+    static constexpr std::size_t pack_width() {
+#if ROTBENCH_SIMD
+        if constexpr (PackKernel<Kernel>) return Pack::size;
+#endif
+        return 1;
+    }
+    static constexpr std::size_t width = pack_width();
+    static std::size_t pack_count(const Bodies& b) { return width > 1 ? b.size() / width : 0; }
+
+    template <class Phase>
+    void step(Bodies& b, double dt, Phase phase) {
+        const std::size_t packs = pack_count(b);
+#if ROTBENCH_SIMD
+        if constexpr (PackKernel<Kernel>) {
+            for (std::size_t p = 0; p < packs; ++p) {
+                RigidBodyT<Pack> body = load<Pack>(b, p * width);
+                phase(body, pack_memory_[p], dt, Tag<PackOf>{});
+                store(b, p * width, body);
+            }
+        }
+#endif
+        for (std::size_t i = packs * width; i < b.size(); ++i) {
+            RigidBody body = load<double>(b, i);
+            phase(body, memory_[i - packs * width], dt, Tag<Kernel>{});
             store(b, i, body);
         }
     }
 
-private:
-    static RigidBody load(const Bodies& b, std::size_t i) {
-        return {b.inertia[i], b.orientation[i], b.omega[i], b.torque[i]};
+    template <class S>
+    static S get(const std::vector<double>& v, std::size_t i) {
+        if constexpr (std::is_same_v<S, double>) return v[i];
+        else return S::load_unaligned(v.data() + i);
     }
-    static void store(Bodies& b, std::size_t i, const RigidBody& body) {
-        b.orientation.set(i, body.q);
-        b.omega.set(i, body.omega);
+    template <class S>
+    static void put(std::vector<double>& v, std::size_t i, const S& x) {
+        if constexpr (std::is_same_v<S, double>) v[i] = x;
+        else x.store_unaligned(v.data() + i);
     }
+    template <class S>
+    static Vec3T<S> get(const Vec3Array& a, std::size_t i) { return {get<S>(a.x, i), get<S>(a.y, i), get<S>(a.z, i)}; }
+    template <class S>
+    static RigidBodyT<S> load(const Bodies& b, std::size_t i) {
+        const auto& q = b.orientation;
+        return {get<S>(b.inertia, i), QuatT<S>(get<S>(q.w, i), get<S>(q.x, i), get<S>(q.y, i), get<S>(q.z, i)),
+                get<S>(b.omega, i), get<S>(b.torque, i)};
+    }
+    template <class S>
+    static void store(Bodies& b, std::size_t i, const RigidBodyT<S>& body) {
+        put(b.orientation.w, i, body.q.w()), put(b.orientation.x, i, body.q.x());
+        put(b.orientation.y, i, body.q.y()), put(b.orientation.z, i, body.q.z());
+        put(b.omega.x, i, body.omega.x()), put(b.omega.y, i, body.omega.y()), put(b.omega.z, i, body.omega.z());
+    }
+
     std::vector<typename Kernel::Memory> memory_;
+#if ROTBENCH_SIMD
+    struct NoPack {
+        struct Memory {};
+    };
+    template <class K>
+    static auto pack_kernel() {
+        if constexpr (PackKernel<K>) return Tag<typename K::template rebind<Pack>>{};
+        else return Tag<NoPack>{};
+    }
+    using PackOf = typename decltype(pack_kernel<Kernel>())::type;
+    std::vector<typename PackOf::Memory> pack_memory_;
+#endif
 };
 
 // Registers a kernel under an id at static-initialisation time.

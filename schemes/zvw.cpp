@@ -16,32 +16,34 @@
 namespace rotbench {
 namespace {
 
-template <bool ReestimateTorque>
+template <bool ReestimateTorque, class S = double>
 struct ZhaoVanWachem {
+    template <class T>
+    using rebind = ZhaoVanWachem<ReestimateTorque, T>;
     struct Memory {
-        Vec3 omega_body;       // w'^n
-        Vec3 omega_body_half;  // w'^{n+1/2}
-        Vec3 torque_body;      // T'^n
+        Vec3T<S> omega_body;       // w'^n
+        Vec3T<S> omega_body_half;  // w'^{n+1/2}
+        Vec3T<S> torque_body;      // T'^n
     };
 
-    static void start(const RigidBody&, Memory&) {}
+    static void start(const RigidBodyT<S>&, Memory&) {}
 
-    static void predict(RigidBody& b, Memory& m, double dt) {
+    static void predict(RigidBodyT<S>& b, Memory& m, double dt) {
         m.omega_body = to_body(b.q, b.omega);                                   // eq. 54
         m.torque_body = to_body(b.q, b.torque);                                 // eq. 55
-        const Vec3 alpha = euler_acceleration(m.omega_body, m.torque_body, b.inertia);  // eq. 34
-        const Vec3 omega_body_quarter = m.omega_body + 0.25 * dt * alpha;       // eq. 56
+        const Vec3T<S> alpha = euler_acceleration(m.omega_body, m.torque_body, b.inertia);  // eq. 34
+        const Vec3T<S> omega_body_quarter = m.omega_body + 0.25 * dt * alpha;   // eq. 56
         m.omega_body_half = m.omega_body + 0.5 * dt * alpha;                    // eq. 57
-        const Vec3 omega_quarter = to_world(b.q, omega_body_quarter);           // eq. 58
-        const Quat q_half = rotation_increment(omega_quarter, 0.5 * dt) * b.q;  // eq. 59
+        const Vec3T<S> omega_quarter = to_world(b.q, omega_body_quarter);       // eq. 58
+        const QuatT<S> q_half = rotation_increment<S>(omega_quarter, 0.5 * dt) * b.q;  // eq. 59
         b.omega = to_world(q_half, m.omega_body_half);                          // eq. 60
-        b.q = rotation_increment(b.omega, dt) * b.q;                            // eqs. 61-62
+        b.q = rotation_increment<S>(b.omega, dt) * b.q;                         // eqs. 61-62
     }
 
-    static void correct(RigidBody& b, Memory& m, double dt) {
-        const Vec3 torque_body = ReestimateTorque ? to_body(b.q, b.torque)     // eq. 40
-                                                  : m.torque_body;              // eq. 55
-        const Vec3 alpha = euler_acceleration(m.omega_body_half, torque_body, b.inertia);  // eq. 41
+    static void correct(RigidBodyT<S>& b, Memory& m, double dt) {
+        const Vec3T<S> torque_body = ReestimateTorque ? to_body(b.q, b.torque)  // eq. 40
+                                                      : m.torque_body;          // eq. 55
+        const Vec3T<S> alpha = euler_acceleration(m.omega_body_half, torque_body, b.inertia);  // eq. 41
         b.omega = to_world(b.q, m.omega_body + dt * alpha);                     // eqs. 63-64
     }
 };

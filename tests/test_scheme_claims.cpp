@@ -2,11 +2,14 @@
 // order with and without torque, exactness, momentum conservation. These tests hold each
 // scheme to its own claims, so a new scheme is tested by registering it.
 #include "harness/run.hpp"
+#include "references/free_rigid_body.hpp"
+#include "schemes/quaternion.hpp"
 #include "reports/expected_orders.hpp"
 #include "reports/orders.hpp"
 
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <limits>
 
 using namespace rotbench;
 
@@ -69,17 +72,47 @@ TEST_CASE("on the symmetric free cylinder each scheme converges at least at its 
     }
 }
 
+// How much the closed-form motion of a scene amplifies a perturbation of its initial angular
+// velocity: max over t of |w(t) - w'(t)| / |dw0|, by finite differences with relative
+// perturbations of 1e-8 along each body axis (small enough to stay linear, large enough to
+// stand clear of round-off), sampled at every step of dt.
+double perturbation_growth(const std::string& scene_id, double dt) {
+    const auto scene = make_scene(scene_id);
+    const Bodies initial = scene->initial_state();
+    const Vec3 inertia = initial.inertia[0];
+    const Quat q0 = initial.orientation[0];
+    const Vec3 omega0 = to_body(q0, initial.omega[0]);
+    const FreeRigidBody exact(inertia, q0, omega0);
+    double growth = 1.0;
+    for (int axis = 0; axis < 3; ++axis) {
+        Vec3 perturbed = omega0;
+        const double h = 1e-8 * omega0.norm();
+        perturbed[axis] += h;
+        const FreeRigidBody nearby(inertia, q0, perturbed);
+        for (double t = dt; t <= scene->t_end() + 0.5 * dt; t += dt)
+            growth = std::max(growth, (exact.omega_world(t) - nearby.omega_world(t)).norm() / h);
+    }
+    return growth;
+}
+
 TEST_CASE("a scheme that claims to be exact without torque follows the closed form to round-off") {
     const auto exact = schemes_where([](const SchemeClaims& c) { return c.exact_without_torque; });
     REQUIRE_FALSE(exact.empty());
     for (const auto& scheme : exact)
         for (const char* scene : {"asymmetric_free", "dzhanibekov"}) {
-            const RunResult r = run_one({scene, scheme, 0.1, 0.0}, {.measure_time = false});
-            INFO(scheme << " on " << scene);
-            // The closed form itself is verified to 7e-13 over 1000 periods; 200 steps of it
-            // add a few 1e-14 each (measured 2e-14 to 1e-13).
-            CHECK(r.value("omega_err_max") < 1e-11);
-            CHECK(r.value("orientation_err_max") < 1e-11);
+            const double dt = 0.1;
+            const RunResult r = run_one({scene, scheme, dt, 0.0}, {.measure_time = false});
+            // Round-off bound: each step restarts the closed form from a state that carries a
+            // few ulp of round-off (allow 10 ulp of |w0| per step), and the motion amplifies
+            // each such error by at most perturbation_growth until t_end. Near the separatrix
+            // (dzhanibekov) that growth is large: a fixed 1e-11 passed there for one rounding
+            // of the arithmetic and not for another.
+            const double growth = perturbation_growth(scene, dt);
+            const double bound = r.value("steps") * 10.0 * std::numeric_limits<double>::epsilon() *
+                                 make_scene(scene)->initial_state().omega[0].norm() * growth;
+            INFO(scheme << " on " << scene << ": growth " << growth << ", bound " << bound);
+            CHECK(r.value("omega_err_max") < bound);
+            CHECK(r.value("orientation_err_max") < bound);
         }
 }
 
