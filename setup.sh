@@ -28,6 +28,8 @@ cmake --build "$build" --parallel "$(nproc)"
 case "${1:-build}" in
   build)  ;;
   report) "$build/rotbench" run --out out/default --overwrite
+          benchmarks/cost.sh "$build" out/default          # the cost table (about 2 min)
+          "$build/rotbench" report out/default
           echo "setup: report written to out/default/report.md" ;;
   test)   ctest --test-dir "$build" --output-on-failure --parallel "$(nproc)" --label-exclude slow ;;
   *)      echo "usage: ./setup.sh [build|report|test]" >&2; exit 2 ;;

@@ -1,5 +1,7 @@
 #include "reports/markdown_report.hpp"
 
+#include "reports/cost_table.hpp"
+
 #include "build_info.hpp"
 #include "references/odeint_reference.hpp"
 #include "reports/convergence_plots.hpp"
@@ -284,6 +286,7 @@ std::string markdown_report(const std::vector<RunResult>& results, const std::st
     const auto orders = observed_orders(results);
     summary_section(md, results, orders);
     md += ranking_section(results, orders);
+    md += cost_section(dir);
     for (const auto& scene : unique_in_order(results, &RunSpec::scene)) scene_section(md, scene, results, orders, dir);
     table1_section(md, results);
     md += energy_series_section(results, dir);
