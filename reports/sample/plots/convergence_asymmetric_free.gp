@@ -10,10 +10,10 @@ set output 'convergence_asymmetric_free.svg'
 set title 'asymmetric_free: omega_err_max against dt'
 set xlabel 'dt (s)'
 set ylabel 'omega_err_max'
-e0 = 0.000577207394289945; d0 = 0.0125; lo = 0.00078125; hi = 0.1
+e0 = 0.0005772073943052483; d0 = 0.0125; lo = 0.00078125; hi = 0.1
 slope(x, p) = (x >= lo && x <= hi) ? e0*(x/d0)**p : 1/0  # drawn over the data's dt only
 set xrange [lo/1.5:hi*1.5]
-set yrange [2.0924464385910018e-14/3:0.7862810792662159*3]
+set yrange [2.9312621226308895e-14/3:0.7862810792662159*3]
 set samples 200
 plot for [i=1:words(names)] file index (i-1) using 1:2 with linespoints pt (7 - 2*((i-1)/8)) dt 1+(i-1)/8 ps 0.6 title word(names, i), \
      slope(x, 1) dt 2 lc 'gray50' title 'slope 1', slope(x, 2) dt 3 lc 'gray30' title 'slope 2', \

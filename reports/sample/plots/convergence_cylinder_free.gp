@@ -10,10 +10,10 @@ set output 'convergence_cylinder_free.svg'
 set title 'cylinder_free: omega_err_max against dt'
 set xlabel 'dt (s)'
 set ylabel 'omega_err_max'
-e0 = 0.0006771156688632328; d0 = 0.0001; lo = 1e-06; hi = 0.01
+e0 = 0.0006771156689901882; d0 = 0.0001; lo = 1e-06; hi = 0.01
 slope(x, p) = (x >= lo && x <= hi) ? e0*(x/d0)**p : 1/0  # drawn over the data's dt only
 set xrange [lo/1.5:hi*1.5]
-set yrange [1.8062973772517744e-14/3:1.9996001199593212*3]
+set yrange [1.7296690385882172e-14/3:1.9996001199593212*3]
 set samples 200
 plot for [i=1:words(names)] file index (i-1) using 1:2 with linespoints pt (7 - 2*((i-1)/8)) dt 1+(i-1)/8 ps 0.6 title word(names, i), \
      slope(x, 1) dt 2 lc 'gray50' title 'slope 1', slope(x, 2) dt 3 lc 'gray30' title 'slope 2', \

@@ -10,10 +10,10 @@ set output 'convergence_dipole_top.svg'
 set title 'dipole_top: omega_err_max against dt'
 set xlabel 'dt (s)'
 set ylabel 'omega_err_max'
-e0 = 5.289302513520793e-06; d0 = 0.00125; lo = 0.00015625; hi = 0.01
+e0 = 5.289302430732482e-06; d0 = 0.00125; lo = 0.00015625; hi = 0.01
 slope(x, p) = (x >= lo && x <= hi) ? e0*(x/d0)**p : 1/0  # drawn over the data's dt only
 set xrange [lo/1.5:hi*1.5]
-set yrange [5.078653107172394e-09/3:1.8534513303947415*3]
+set yrange [5.079419827456974e-09/3:1.8534513303947415*3]
 set samples 200
 plot for [i=1:words(names)] file index (i-1) using 1:2 with linespoints pt (7 - 2*((i-1)/8)) dt 1+(i-1)/8 ps 0.6 title word(names, i), \
      slope(x, 1) dt 2 lc 'gray50' title 'slope 1', slope(x, 2) dt 3 lc 'gray30' title 'slope 2', \

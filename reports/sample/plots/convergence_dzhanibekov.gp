@@ -10,10 +10,10 @@ set output 'convergence_dzhanibekov.svg'
 set title 'dzhanibekov: omega_err_max against dt'
 set xlabel 'dt (s)'
 set ylabel 'omega_err_max'
-e0 = 0.008760984848120521; d0 = 0.0125; lo = 0.00078125; hi = 0.1
+e0 = 0.00876098482736541; d0 = 0.0125; lo = 0.00078125; hi = 0.1
 slope(x, p) = (x >= lo && x <= hi) ? e0*(x/d0)**p : 1/0  # drawn over the data's dt only
 set xrange [lo/1.5:hi*1.5]
-set yrange [2.265567969492702e-12/3:2.250570564805205*3]
+set yrange [5.8390072507501e-11/3:2.250570564841688*3]
 set samples 200
 plot for [i=1:words(names)] file index (i-1) using 1:2 with linespoints pt (7 - 2*((i-1)/8)) dt 1+(i-1)/8 ps 0.6 title word(names, i), \
      slope(x, 1) dt 2 lc 'gray50' title 'slope 1', slope(x, 2) dt 3 lc 'gray30' title 'slope 2', \

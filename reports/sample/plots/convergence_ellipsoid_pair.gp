@@ -10,10 +10,10 @@ set output 'convergence_ellipsoid_pair.svg'
 set title 'ellipsoid_pair: energy_drift_max against dt'
 set xlabel 'dt (s)'
 set ylabel 'energy_drift_max'
-e0 = 0.0006185476369026899; d0 = 0.0001; lo = 2.5e-05; hi = 0.0004
+e0 = 0.0006185476369206084; d0 = 0.0001; lo = 2.5e-05; hi = 0.0004
 slope(x, p) = (x >= lo && x <= hi) ? e0*(x/d0)**p : 1/0  # drawn over the data's dt only
 set xrange [lo/1.5:hi*1.5]
-set yrange [3.857028142469061e-05/3:2490.587560049784*3]
+set yrange [3.857050695981853e-05/3:2490.587560047963*3]
 set samples 200
 plot for [i=1:words(names)] file index (i-1) using 1:2 with linespoints pt (7 - 2*((i-1)/8)) dt 1+(i-1)/8 ps 0.6 title word(names, i), \
      slope(x, 1) dt 2 lc 'gray50' title 'slope 1', slope(x, 2) dt 3 lc 'gray30' title 'slope 2', \

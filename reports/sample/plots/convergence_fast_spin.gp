@@ -10,10 +10,10 @@ set output 'convergence_fast_spin.svg'
 set title 'fast_spin: omega_err_max against dt'
 set xlabel 'dt (s)'
 set ylabel 'omega_err_max'
-e0 = 0.06137964899435612; d0 = 0.00025; lo = 6.25e-05; hi = 0.001
+e0 = 0.06137964899423994; d0 = 0.00025; lo = 6.25e-05; hi = 0.001
 slope(x, p) = (x >= lo && x <= hi) ? e0*(x/d0)**p : 1/0  # drawn over the data's dt only
 set xrange [lo/1.5:hi*1.5]
-set yrange [7.46865820278069e-14/3:74.12627690693763*3]
+set yrange [8.937757785533225e-14/3:74.12627690693797*3]
 set samples 200
 plot for [i=1:words(names)] file index (i-1) using 1:2 with linespoints pt (7 - 2*((i-1)/8)) dt 1+(i-1)/8 ps 0.6 title word(names, i), \
      slope(x, 1) dt 2 lc 'gray50' title 'slope 1', slope(x, 2) dt 3 lc 'gray30' title 'slope 2', \

@@ -10,10 +10,10 @@ set output 'convergence_fibre_bounce.svg'
 set title 'fibre_bounce: energy_drift_max against dt'
 set xlabel 'dt (s)'
 set ylabel 'energy_drift_max'
-e0 = 8.382764041324732e-06; d0 = 1.25e-06; lo = 1e-07; hi = 1e-05
+e0 = 8.382764040668918e-06; d0 = 1.25e-06; lo = 1e-07; hi = 1e-05
 slope(x, p) = (x >= lo && x <= hi) ? e0*(x/d0)**p : 1/0  # drawn over the data's dt only
 set xrange [lo/1.5:hi*1.5]
-set yrange [5.745194053106786e-08/3:0.19704912687931408*3]
+set yrange [5.7451939875253446e-08/3:0.1970491268793682*3]
 set samples 200
 plot for [i=1:words(names)] file index (i-1) using 1:2 with linespoints pt (7 - 2*((i-1)/8)) dt 1+(i-1)/8 ps 0.6 title word(names, i), \
      slope(x, 1) dt 2 lc 'gray50' title 'slope 1', slope(x, 2) dt 3 lc 'gray30' title 'slope 2', \

@@ -10,10 +10,10 @@ set output 'convergence_torqued_cylinder.svg'
 set title 'torqued_cylinder: omega_err_max against dt'
 set xlabel 'dt (s)'
 set ylabel 'omega_err_max'
-e0 = 0.0004236407523990256; d0 = 0.00125; lo = 0.00015625; hi = 0.01
+e0 = 0.00042364075286516396; d0 = 0.00125; lo = 0.00015625; hi = 0.01
 slope(x, p) = (x >= lo && x <= hi) ? e0*(x/d0)**p : 1/0  # drawn over the data's dt only
 set xrange [lo/1.5:hi*1.5]
-set yrange [2.2740986768150844e-08/3:3.9126215018868327*3]
+set yrange [2.2740349517810073e-08/3:3.912621501886828*3]
 set samples 200
 plot for [i=1:words(names)] file index (i-1) using 1:2 with linespoints pt (7 - 2*((i-1)/8)) dt 1+(i-1)/8 ps 0.6 title word(names, i), \
      slope(x, 1) dt 2 lc 'gray50' title 'slope 1', slope(x, 2) dt 3 lc 'gray30' title 'slope 2', \
