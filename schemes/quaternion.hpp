@@ -36,7 +36,8 @@ ROTBENCH_INLINE Vec3T<S> to_body(const QuatT<S>& q, const Vec3Of<S>& v_world) { 
 template <class S = double>
 ROTBENCH_INLINE QuatT<S> rotation_from_vector(const Vec3Of<S>& theta) {
     const S half = 0.5 * theta.norm();
-    const auto [sin_half, cos_half] = sin_cos(half);
+    const auto sin_cos_half = sin_cos(half);  // not a structured binding: clang 14 cannot capture one
+    const S sin_half = sin_cos_half.first, cos_half = sin_cos_half.second;
     const S sinc = choose(half < 1e-4, [&] { return S(1.0 - half * half / 6.0); }, [&] { return S(sin_half / half); });
     const Vec3T<S> v = (0.5 * sinc) * theta;
     return QuatT<S>(cos_half, v.x(), v.y(), v.z());
