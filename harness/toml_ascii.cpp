@@ -58,6 +58,7 @@ std::string ascii_toml(std::string_view text, const std::string& name) {
                 case Context::literal:
                 case Context::multiline_literal:
                     fail("a non-ASCII character in a literal string ('...'); write it in a basic string (\"...\")");
+                    break;  // not reached: fail throws
                 case Context::bare: fail("a non-ASCII character outside a string or comment");
             }
             i += cp.length;

@@ -2,6 +2,8 @@
 
 #include "reports/output_files.hpp"
 
+#include "build_info.hpp"
+
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
@@ -14,7 +16,13 @@ namespace {
 
 constexpr char magic[8] = {'R', 'B', 'T', 'R', 'J', '0', '0', '1'};
 
+// A trajectory is only as reproducible as the build that computed it: another compiler, other
+// flags or other code round differently. The stored key therefore names the build, and a
+// build from a modified tree (whose code the commit does not pin) keeps no disk cache at all.
+// (Before, a sample report reused references cached by a build without -ffp-contract=off and
+// differed from a fresh run in the 14th digit.)
 std::filesystem::path directory() {
+    if (!build_is_pinned()) return "";
     if (const char* dir = std::getenv("ROTBENCH_CACHE")) return std::string(dir) == "off" ? "" : dir;
     if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg) return std::filesystem::path(xdg) / "rotbench";
     if (const char* home = std::getenv("HOME"); home && *home) return std::filesystem::path(home) / ".cache" / "rotbench";
@@ -34,7 +42,17 @@ std::filesystem::path file_for(const std::string& scene_id, const std::string& k
 
 }  // namespace
 
-std::optional<Trajectory> load_cached(const std::string& scene_id, const std::string& key) {
+std::string cache_build_key() {
+    return fmt::format("{}|{}|{}|{}", build_info::commit, build_info::compiler, build_info::build_type, build_info::flags);
+}
+
+bool build_is_pinned() {
+    const std::string commit = build_info::commit;
+    return commit != "unknown" && !commit.ends_with("-dirty");
+}
+
+std::optional<Trajectory> load_cached(const std::string& scene_id, const std::string& run_key) {
+    const std::string key = run_key + "|build=" + cache_build_key();
     const auto path = file_for(scene_id, key);
     if (path.empty()) return std::nullopt;
     std::ifstream in(path, std::ios::binary);
@@ -54,7 +72,8 @@ std::optional<Trajectory> load_cached(const std::string& scene_id, const std::st
     return t;
 }
 
-void store_cached(const std::string& scene_id, const std::string& key, const Trajectory& trajectory) {
+void store_cached(const std::string& scene_id, const std::string& run_key, const Trajectory& trajectory) {
+    const std::string key = run_key + "|build=" + cache_build_key();
     const auto path = file_for(scene_id, key);
     if (path.empty()) return;
     std::string bytes(magic, sizeof magic);

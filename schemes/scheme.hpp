@@ -78,11 +78,13 @@ public:
         const std::size_t packs = pack_count(b);
 #if ROTBENCH_SIMD
         if constexpr (PackKernel<Kernel>) {
-            pack_memory_.assign(packs, typename PackOf::Memory{});
+            pack_memory_.clear();
+            pack_memory_.resize(packs);  // built in place: a copy of a fresh Memory would copy unset packs
             for (std::size_t p = 0; p < packs; ++p) PackOf::start(load<Pack>(b, p * width), pack_memory_[p]);
         }
 #endif
-        memory_.assign(b.size() - packs * width, typename Kernel::Memory{});
+        memory_.clear();
+        memory_.resize(b.size() - packs * width);
         for (std::size_t i = packs * width; i < b.size(); ++i) Kernel::start(load<double>(b, i), memory_[i - packs * width]);
     }
     void predict(Bodies& b, double dt) override { step(b, dt, [](auto& body, auto& m, double h, auto kernel) { decltype(kernel)::type::predict(body, m, h); }); }

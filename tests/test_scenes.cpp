@@ -8,6 +8,8 @@
 #include <catch2/catch.hpp>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 
 using namespace rotbench;
 
@@ -158,7 +160,7 @@ TEST_CASE("scene parameters change the run") {
     CHECK(base.value("omega_rms_z") != stronger.value("omega_rms_z"));
 }
 
-TEST_CASE("reference trajectories are cached on disk, keyed by their inputs") {
+TEST_CASE("reference trajectories are cached on disk, keyed by their inputs and the build") {
     const auto dir = std::filesystem::temp_directory_path() / ("rotbench_cache_test_" + std::to_string(::getpid()));
     std::filesystem::remove_all(dir);
     ::setenv("ROTBENCH_CACHE", dir.c_str(), 1);
@@ -166,12 +168,22 @@ TEST_CASE("reference trajectories are cached on disk, keyed by their inputs") {
     t.bodies = 1;
     t.values.assign(2 * Trajectory::width, 0.5);
     store_cached("dipole_top", "key-a", t);
-    const auto hit = load_cached("dipole_top", "key-a");
-    REQUIRE(hit);
-    CHECK(hit->values == t.values);
-    CHECK_FALSE(load_cached("dipole_top", "key-b"));
-    ::setenv("ROTBENCH_CACHE", "off", 1);
-    CHECK_FALSE(load_cached("dipole_top", "key-a"));
+    if (build_is_pinned()) {
+        const auto hit = load_cached("dipole_top", "key-a");
+        REQUIRE(hit);
+        CHECK(hit->values == t.values);
+        CHECK_FALSE(load_cached("dipole_top", "key-b"));
+        // The stored key names the build: a trajectory from another build is a miss.
+        REQUIRE(std::distance(std::filesystem::directory_iterator(dir), std::filesystem::directory_iterator()) == 1);
+        std::ifstream file(std::filesystem::directory_iterator(dir)->path(), std::ios::binary);
+        const std::string bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+        CHECK(bytes.find("key-a|build=" + cache_build_key()) != std::string::npos);
+        ::setenv("ROTBENCH_CACHE", "off", 1);
+        CHECK_FALSE(load_cached("dipole_top", "key-a"));
+    } else {  // a modified tree: the commit does not pin the code, nothing is kept
+        CHECK_FALSE(std::filesystem::exists(dir));
+        CHECK_FALSE(load_cached("dipole_top", "key-a"));
+    }
     ::unsetenv("ROTBENCH_CACHE");
     std::filesystem::remove_all(dir);
 }
