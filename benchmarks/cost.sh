@@ -1,50 +1,69 @@
 #!/usr/bin/env bash
 # The cost table of the report: for every scheme, per body-step,
 #   ns_batched, ns_alone   Google Benchmark at N = 1e6 bodies (rotbench_bench): the batched
-#                          loops, and the same scheme one body at a time; medians of 5
-#                          repetitions, with their spread ((max - min) / median);
+#                          loops, and the same scheme one body at a time. Two consecutive runs
+#                          of 7 repetitions each, in random interleaved order (a slow spell of
+#                          the shared machine then falls on all schemes alike); medians of all
+#                          14, with their spread ((max - min) / median). (Rounds of one
+#                          repetition per process in a fixed order were tried: each benchmark
+#                          then met the same heap layout every time, and direct a slow one.)
 #   instr_batched, instr_alone   callgrind instruction counts (benchmarks/instructions.sh):
 #                          N = 1000 bodies, and one body; deterministic, whatever the load;
-#   and both ratios to `direct`. The load/store-only row is the floor of the batched loops.
-# Usage: benchmarks/cost.sh BUILD_DIR OUT_DIR   (writes OUT_DIR/cost.csv; about 2 min)
+#   libm_instr_alone       of instr_alone, those inside libm (sin, cos, ...);
+#   memory_share           load_store ns / ns_batched: the part of a batched step that reading
+#                          and writing the state alone takes;
+#   both ratios to `direct`, and how much each time ratio (speed-up, ns / direct) differs
+#   between the two runs: |run 1 / run 2 - 1|, the repeatability of the table.
+# Usage: benchmarks/cost.sh BUILD_DIR OUT_DIR   (writes OUT_DIR/cost.csv; about 4 min)
 set -euo pipefail
 build=${1:?build dir}; out=${2:?output dir}
 here=$(cd "$(dirname "$0")" && pwd)
 mkdir -p "$out"
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
-"$build/rotbench_bench" --benchmark_filter='/1000000$' --benchmark_min_time=0.2 --benchmark_repetitions=5 \
-    --benchmark_format=csv > "$tmp/bench.csv" 2> /dev/null
+for run in 1 2; do
+    "$build/rotbench_bench" --benchmark_filter='/1000000$' --benchmark_min_time=0.1 --benchmark_repetitions=7 \
+        --benchmark_enable_random_interleaving=true --benchmark_format=csv > "$tmp/bench$run.csv" 2> /dev/null
+done
 "$here/instructions.sh" "$build" 1000 20 > "$tmp/batched.csv"
 "$here/instructions.sh" "$build" 1 2000 > "$tmp/alone.csv"
 python3 - "$tmp" "$out/cost.csv" <<'PY'
-import csv, statistics, sys
+import csv, os, statistics, sys
 tmp, target = sys.argv[1], sys.argv[2]
-samples = {}
-with open(f"{tmp}/bench.csv") as f:
-    lines = f.read().splitlines()
-header = next(i for i, l in enumerate(lines) if l.startswith("name,"))
-for row in csv.DictReader(lines[header:]):
-    name = row["name"]
-    if not name.endswith("/1000000"):   # aggregates (_mean, _median, ...) are recomputed below
-        continue
-    samples.setdefault(name[: -len("/1000000")], []).append(float(row["ns_per_body_step"]))
+def samples(path):   # benchmark -> its repetitions, ns per body-step
+    with open(path) as f:
+        lines = f.read().splitlines()
+    header = next(i for i, l in enumerate(lines) if l.startswith("name,"))
+    found = {}
+    for row in csv.DictReader(lines[header:]):
+        if row["name"].endswith("/1000000"):   # aggregates (_mean, _median, ...) are recomputed below
+            found.setdefault(row["name"][: -len("/1000000")], []).append(float(row["ns_per_body_step"]))
+    return found
+runs = [samples(f"{tmp}/bench{r}.csv") for r in (1, 2)]
+pooled = {k: runs[0][k] + runs[1][k] for k in runs[0]}
 def instr(path):
     with open(path) as f:
-        return {r["scheme"]: float(r["instructions_per_body_step"]) for r in csv.DictReader(f)}
+        return {r["scheme"]: r for r in csv.DictReader(f)}
 batched_i, alone_i = instr(f"{tmp}/batched.csv"), instr(f"{tmp}/alone.csv")
-med = {k: statistics.median(v) for k, v in samples.items()}
-spread = {k: (max(v) - min(v)) / statistics.median(v) for k, v in samples.items()}
+def med(run, k): return statistics.median(run[k])
+def speedup(run, s): return med(run, f"one_at_a_time/{s}") / med(run, f"batched/{s}")
+def ns_ratio(run, s): return med(run, f"batched/{s}") / med(run, "batched/direct")
+def differ(f, s): return abs(f(runs[0], s) / f(runs[1], s) - 1)
+def spread(k): return (max(pooled[k]) - min(pooled[k])) / statistics.median(pooled[k])
 cols = ["scheme", "ns_batched", "ns_batched_spread", "ns_alone", "ns_alone_spread", "speedup",
-        "instr_batched", "instr_alone", "ns_ratio_to_direct", "instr_ratio_to_direct"]
+        "instr_batched", "instr_alone", "ns_ratio_to_direct", "instr_ratio_to_direct",
+        "libm_instr_alone", "memory_share", "speedup_runs_differ", "ns_ratio_runs_differ"]
+floor = med(pooled, "load_store")
 with open(target + ".tmp", "w", newline="") as f:
     w = csv.writer(f, lineterminator="\n")
     w.writerow(cols)
-    w.writerow(["load_store", med["load_store"], spread["load_store"], "", "", "", "", "", "", ""])
+    w.writerow(["load_store", floor, spread("load_store")] + [""] * (len(cols) - 3))
     for s in sorted(batched_i):
-        b, a = med[f"batched/{s}"], med[f"one_at_a_time/{s}"]
-        w.writerow([s, b, spread[f"batched/{s}"], a, spread[f"one_at_a_time/{s}"], a / b, batched_i[s], alone_i[s],
-                    b / med["batched/direct"], batched_i[s] / batched_i["direct"]])
-import os
+        b, a = med(pooled, f"batched/{s}"), med(pooled, f"one_at_a_time/{s}")
+        ib, ia = float(batched_i[s]["instructions_per_body_step"]), float(alone_i[s]["instructions_per_body_step"])
+        w.writerow([s, b, spread(f"batched/{s}"), a, spread(f"one_at_a_time/{s}"), speedup(pooled, s), ib, ia,
+                    ns_ratio(pooled, s), ib / float(batched_i["direct"]["instructions_per_body_step"]),
+                    alone_i[s]["libm_instructions_per_body_step"], floor / b,
+                    differ(speedup, s), differ(ns_ratio, s)])
 os.replace(target + ".tmp", target)
 PY
 echo "wrote $out/cost.csv"

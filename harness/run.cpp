@@ -34,6 +34,9 @@ public:
         : scene_(scene),
           reference_(reference),
           series_stride_(series_stride),
+          conserves_energy_(scene.conserves_energy()),
+          gains_energy_(scene.gains_energy()),
+          conserves_momentum_(scene.conserves_angular_momentum()),
           energy0_(scene.energy(initial)),
           energy_scale_(std::max(std::abs(energy0_), kinetic_energy(initial))),
           momentum0_(total_angular_momentum(initial)) {
@@ -48,19 +51,21 @@ public:
         if (interrupt_signal()) return false;
         const double energy = finite_state(b) ? scene_.energy(b) : nan;
         const double limit = blowup_energy_factor * energy_scale_;
-        const bool runaway = scene_.conserves_energy() ? std::abs(energy - energy0_) > limit
-                                                       : !scene_.gains_energy() && energy - energy0_ > limit;
+        const bool runaway = conserves_energy_ ? std::abs(energy - energy0_) > limit : !gains_energy_ && energy - energy0_ > limit;
         if (!std::isfinite(energy) || runaway) {
             fail_step_ = n;
             fail_time_ = t;
             return false;
         }
-        if (energy0_ != 0.0 && scene_.conserves_energy()) {
+        if (energy0_ != 0.0 && conserves_energy_) {
             energy_drift_ = std::max(energy_drift_, std::abs(energy - energy0_) / std::abs(energy0_));
             envelope_fit_.add(t, energy_drift_);
         }
-        if (series_stride_ > 0 && n % series_stride_ == 0) record(t, b);
-        if (scene_.conserves_angular_momentum() && momentum0_.norm() > 0.0)
+        if (series_stride_ > 0 && --until_record_ == 0) {
+            record(t, b);
+            until_record_ = series_stride_;
+        }
+        if (conserves_momentum_ && momentum0_.norm() > 0.0)
             momentum_drift_ = std::max(momentum_drift_, (total_angular_momentum(b) - momentum0_).norm() / momentum0_.norm());
         for (std::size_t i = 0; i < b.size(); ++i) {
             const Quat q = b.orientation[i];
@@ -114,6 +119,9 @@ private:
     const Scene& scene_;
     const Reference* reference_;
     std::int64_t series_stride_;
+    std::int64_t until_record_ = series_stride_;  // steps to the next series sample (a countdown: no division per step)
+    // The scene's answers, asked once: the observer runs at every step of 2e8.
+    bool conserves_energy_, gains_energy_, conserves_momentum_;
     // Least-squares line through the envelope max_{s<=t} |E(s) - E0|/|E0|: its slope is
     // the secular drift rate (per second), apart from the bounded oscillation.
     struct LineFit {

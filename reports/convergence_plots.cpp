@@ -1,5 +1,6 @@
 #include "reports/convergence_plots.hpp"
 
+#include "harness/scene.hpp"
 #include "reports/gnuplot.hpp"
 #include "reports/output_files.hpp"
 
@@ -16,22 +17,31 @@ std::string plotted_error(const std::vector<const RunResult*>& runs) {
 }
 
 std::string convergence_plots(const std::string& scene, const std::vector<const RunResult*>& runs,
-                              const std::filesystem::path& dir) {
+                              const std::filesystem::path& dir, const std::map<std::string, double>& instructions) {
     const std::string metric = plotted_error(runs);
     std::vector<std::string> schemes;
     for (const RunResult* r : runs)
         if (std::find(schemes.begin(), schemes.end(), r->spec.scheme) == schemes.end()) schemes.push_back(r->spec.scheme);
 
-    // One block per scheme: dt, error, cpu seconds, force evaluations (finite errors only).
-    std::string data = fmt::format("# {}: dt {} cpu_seconds force_evals, one block per scheme: {}\n", scene, metric,
-                                   fmt::format("{}", fmt::join(schemes, " ")));
+    // The deterministic cost of a run: the scheme's instructions per body-step (one body at a
+    // time, as scenes step; callgrind, cost.csv) times its body-steps. Drawn when every scheme
+    // plotted has a count.
+    const bool counted = std::all_of(schemes.begin(), schemes.end(), [&](const auto& s) { return instructions.count(s); }) &&
+                         instructions.count("direct");
+    const double bodies = static_cast<double>(make_scene(scene, runs.front()->spec.params)->initial_state().size());
+
+    // One block per scheme: dt, error, cpu seconds, force evaluations, scheme instructions (finite errors only).
+    std::string data = fmt::format("# {}: dt {} cpu_seconds force_evals scheme_instructions, one block per scheme: {}\n",
+                                   scene, metric, fmt::format("{}", fmt::join(schemes, " ")));
     double lo = INFINITY, hi = 0, e_mid = 0, dt_mid = 0, e_lo = INFINITY, e_hi = 0;
     for (const auto& scheme : schemes) {
         for (const RunResult* r : runs) {
             const double e = r->value(metric);
             if (r->spec.scheme != scheme || !std::isfinite(e) || !(e > 0)) continue;
-            data += fmt::format("{} {} {} {}\n", format_number(r->spec.dt), format_number(e),
-                                format_number(r->value("cpu_seconds")), format_number(r->value("force_evals")));
+            const double instr = counted ? instructions.at(scheme) * r->value("steps") * bodies : NAN;
+            data += fmt::format("{} {} {} {} {}\n", format_number(r->spec.dt), format_number(e),
+                                format_number(r->value("cpu_seconds")), format_number(r->value("force_evals")),
+                                format_number(instr));
             lo = std::min(lo, r->spec.dt);
             hi = std::max(hi, r->spec.dt);
             e_lo = std::min(e_lo, e);
@@ -51,11 +61,14 @@ std::string convergence_plots(const std::string& scene, const std::vector<const 
     write_file_atomically(dir / "plots" / fmt::format("runs_{}.dat", scene), data);
 
     const std::string names = fmt::format("{}", fmt::join(schemes, " "));
+    std::vector<std::string> titles;  // with the instruction ratio to direct, where counted
+    for (const auto& s : schemes)
+        titles.push_back(counted ? fmt::format("{}({:.2f}x)", s, instructions.at(s) / instructions.at("direct")) : s);
     const std::string head = fmt::format(
-        "set terminal svg size 800,480 dynamic noenhanced font 'sans,12'\n"
+        "set terminal svg size {} dynamic noenhanced font 'sans,12'\n"
         "set logscale xy\nset format x '%g'\nset format y '%.0e'\nset grid\nset key outside right\n"
-        "names = '{}'\nfile = 'runs_{}.dat'\n",
-        names, scene);
+        "names = '{}'\ntitles = '{}'\nfile = 'runs_{}.dat'\n",
+        counted ? "1200,480" : "800,480", names, fmt::join(titles, " "), scene);
     const std::string conv = head + fmt::format(
         "set output 'convergence_{0}.svg'\nset title '{0}: {1} against dt'\nset xlabel 'dt (s)'\nset ylabel '{1}'\n"
         "e0 = {2}; d0 = {3}; lo = {4}; hi = {5}\n"
@@ -66,14 +79,19 @@ std::string convergence_plots(const std::string& scene, const std::vector<const 
         "     slope(x, 4) dt 4 lc 'gray10' title 'slope 4'\n",
         scene, metric, format_number(e_mid), format_number(dt_mid), format_number(lo), format_number(hi),
         format_number(e_lo), format_number(e_hi));
-    const std::string work = head + fmt::format(
-        "set output 'work_precision_{0}.svg'\nset multiplot layout 1,2 title '{0}: {1} against cost'\n"
+    const std::string line = "with linespoints pt (7 - 2*((i-1)/8)) dt 1+(i-1)/8 ps 0.6 title word(titles, i)\n";
+    std::string work = head + fmt::format(
+        "set output 'work_precision_{0}.svg'\nset multiplot layout 1,{2} title '{0}: {1} against cost{3}'\n"
         "set xlabel 'CPU time (s)'\nset ylabel '{1}'\nunset key\n"
-        "plot for [i=1:words(names)] file index (i-1) using 3:2 with linespoints pt (7 - 2*((i-1)/8)) dt 1+(i-1)/8 ps 0.6 title word(names, i)\n"
-        "set xlabel 'force evaluations'\nset key outside right\n"
-        "plot for [i=1:words(names)] file index (i-1) using 4:2 with linespoints pt (7 - 2*((i-1)/8)) dt 1+(i-1)/8 ps 0.6 title word(names, i)\n"
-        "unset multiplot\n",
-        scene, metric);
+        "plot for [i=1:words(names)] file index (i-1) using 3:2 {4}"
+        "set xlabel 'force evaluations'\n{5}"
+        "plot for [i=1:words(names)] file index (i-1) using 4:2 {4}",
+        scene, metric, counted ? 3 : 2, counted ? " (legend: instructions per body-step / direct)" : "", line,
+        counted ? "" : "set key outside right\n");
+    if (counted)
+        work += "set xlabel 'scheme instructions (callgrind)'\nset key outside right\n"
+                "plot for [i=1:words(names)] file index (i-1) using 5:2 " + line;
+    work += "unset multiplot\n";
     const bool drawn = draw_with_gnuplot(dir / "plots" / fmt::format("convergence_{}.gp", scene), conv) &&
                        draw_with_gnuplot(dir / "plots" / fmt::format("work_precision_{}.gp", scene), work);
     if (!drawn) return fmt::format("(plots not drawn: gnuplot is not installed; scripts in `plots/`)\n\n");

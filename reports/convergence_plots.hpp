@@ -1,10 +1,12 @@
 // Per scene: error against dt (convergence, with reference slopes) and error against cost
-// (work-precision: CPU time and force evaluations), one line per scheme, drawn by gnuplot.
+// (work-precision: CPU time, force evaluations and, where the cost table counted them, the
+// scheme's instructions), one line per scheme, drawn by gnuplot.
 #pragma once
 
 #include "harness/run.hpp"
 
 #include <filesystem>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -15,8 +17,9 @@ namespace rotbench {
 std::string plotted_error(const std::vector<const RunResult*>& runs);
 
 // Writes DIR/plots/runs_<scene>.dat and the convergence and work-precision scripts and
-// SVGs; returns the Markdown that shows them.
+// SVGs; returns the Markdown that shows them. `instructions`: per body-step, by scheme
+// (reports/cost_table.hpp); empty, or missing a scheme, leaves that panel out.
 std::string convergence_plots(const std::string& scene, const std::vector<const RunResult*>& runs,
-                              const std::filesystem::path& dir);
+                              const std::filesystem::path& dir, const std::map<std::string, double>& instructions = {});
 
 }  // namespace rotbench

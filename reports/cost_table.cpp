@@ -2,14 +2,17 @@
 
 #include "reports/output_files.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
-#include <map>
+#include <optional>
 #include <sstream>
 #include <vector>
 
 namespace rotbench {
 namespace {
+
+using Row = std::map<std::string, std::string>;
 
 std::vector<std::string> split(const std::string& line) {
     std::vector<std::string> cells;
@@ -19,54 +22,86 @@ std::vector<std::string> split(const std::string& line) {
     return cells;
 }
 
+std::optional<std::vector<Row>> read_rows(const std::filesystem::path& dir) {
+    const auto text = read_file(dir / "cost.csv");
+    if (!text) return std::nullopt;
+    std::stringstream in(*text);
+    std::string line;
+    std::getline(in, line);
+    const auto header = split(line);
+    std::vector<Row> rows;
+    while (std::getline(in, line)) {
+        if (line.empty()) continue;
+        const auto cells = split(line);
+        Row row;
+        for (std::size_t i = 0; i < header.size() && i < cells.size(); ++i) row[header[i]] = cells[i];
+        rows.push_back(std::move(row));
+    }
+    return rows;
+}
+
 std::string number(const std::string& text, const char* format, double scale = 1.0) {
     if (text.empty()) return "";
     return fmt::format(fmt::runtime(format), scale * std::stod(text));
+}
+
+// The largest value of a column over the rows, and the scheme it belongs to.
+std::pair<double, std::string> largest(const std::vector<Row>& rows, const std::vector<std::string>& columns) {
+    std::pair<double, std::string> worst{0.0, ""};
+    for (const Row& r : rows)
+        for (const auto& c : columns)
+            if (r.count(c) && !r.at(c).empty() && std::stod(r.at(c)) > worst.first) worst = {std::stod(r.at(c)), r.at("scheme")};
+    return worst;
 }
 
 }  // namespace
 
 std::string cost_section(const std::filesystem::path& dir) {
     std::string md = "## Cost per body-step\n\n";
-    const auto text = read_file(dir / "cost.csv");
-    if (!text) {
-        return md + "No cost table here: `benchmarks/cost.sh BUILD " + dir.string() + "` measures it (about 2 min) and "
+    const auto rows = read_rows(dir);
+    if (!rows) {
+        return md + "No cost table here: `benchmarks/cost.sh BUILD " + dir.string() + "` measures it (about 3 min) and "
                     "`rotbench report " + dir.string() + "` then includes it (README \"Speed\").\n\n";
     }
-    std::stringstream in(*text);
-    std::string line;
-    std::getline(in, line);
-    const auto header = split(line);
-    std::vector<std::map<std::string, std::string>> rows;
-    while (std::getline(in, line)) {
-        if (line.empty()) continue;
-        const auto cells = split(line);
-        std::map<std::string, std::string> row;
-        for (std::size_t i = 0; i < header.size() && i < cells.size(); ++i) row[header[i]] = cells[i];
-        rows.push_back(std::move(row));
-    }
     md += "Each scheme stepping 1e6 bodies with random states and torques read from memory (`rotbench_bench`, "
-          "Google Benchmark, median of 5 repetitions; spread = (max - min) / median), batched and one body at a time "
-          "through the scheme interface, and its instructions per body-step counted by callgrind (1000 bodies "
-          "batched, and one body), which do not depend on the machine's load. `load_store` reads and writes the "
-          "same state and computes nothing: the floor of the batched loops. The seed schemes step packs of four "
-          "bodies (AVX2, `schemes/simd.hpp`); the others one body at a time in both columns.\n\n"
+          "Google Benchmark: two consecutive runs of 7 repetitions in random interleaved order, median of the 14; "
+          "spread = (max - min) / median), batched and one body at a time through the scheme interface, and its "
+          "instructions per body-step counted by callgrind (1000 bodies batched, and one body), which do not depend on "
+          "the machine's load. `load_store` reads and writes the same state and computes nothing: the floor of the "
+          "batched loops. The seed schemes step packs of four bodies (AVX2, `schemes/simd.hpp`); the others one body at "
+          "a time in both columns. What limits a scheme: *memory share* is load_store's time over the scheme's batched "
+          "time (the part that moving the state alone takes); *libm* is the part of its instructions, one body at a "
+          "time, spent in sin, cos and the like (the packs' are inlined and cannot be counted apart).\n\n"
           "| scheme | ns batched | spread | ns one at a time | spread | speed-up | instr. batched | instr. one at a time "
-          "| ns / direct | instr. / direct |\n|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|\n";
-    double worst_spread = 0;
-    for (auto& r : rows) {
-        for (const char* s : {"ns_batched_spread", "ns_alone_spread"})
-            if (!r[s].empty()) worst_spread = std::max(worst_spread, std::stod(r[s]));
-        md += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |\n", r["scheme"], number(r["ns_batched"], "{:.1f}"),
-                          number(r["ns_batched_spread"], "{:.1f} %", 100.0), number(r["ns_alone"], "{:.1f}"),
-                          number(r["ns_alone_spread"], "{:.1f} %", 100.0), number(r["speedup"], "{:.2f}x"),
-                          number(r["instr_batched"], "{:.0f}"), number(r["instr_alone"], "{:.0f}"),
-                          number(r["ns_ratio_to_direct"], "{:.2f}"), number(r["instr_ratio_to_direct"], "{:.2f}"));
+          "| libm | memory share | ns / direct | instr. / direct |\n|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|\n";
+    for (auto r : *rows) {
+        const std::string libm = r["libm_instr_alone"].empty() || r["instr_alone"].empty()
+                                     ? ""
+                                     : fmt::format("{:.0f} %", 100.0 * std::stod(r["libm_instr_alone"]) / std::stod(r["instr_alone"]));
+        md += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |\n", r["scheme"],
+                          number(r["ns_batched"], "{:.1f}"), number(r["ns_batched_spread"], "{:.1f} %", 100.0),
+                          number(r["ns_alone"], "{:.1f}"), number(r["ns_alone_spread"], "{:.1f} %", 100.0),
+                          number(r["speedup"], "{:.2f}x"), number(r["instr_batched"], "{:.0f}"), number(r["instr_alone"], "{:.0f}"),
+                          libm, number(r["memory_share"], "{:.0f} %", 100.0), number(r["ns_ratio_to_direct"], "{:.2f}"),
+                          number(r["instr_ratio_to_direct"], "{:.2f}"));
     }
-    md += fmt::format("\nLargest spread of a time over its repetitions: {:.1f} %. Instruction counts are exact: two "
-                      "counts of the same binary agree to the instruction.\n\n",
-                      100.0 * worst_spread);
+    const auto spread = largest(*rows, {"ns_batched_spread", "ns_alone_spread"});
+    md += fmt::format("\nLargest spread of a time over its repetitions: {:.1f} % ({}).", 100.0 * spread.first, spread.second);
+    const auto speedup = largest(*rows, {"speedup_runs_differ"}), ratio = largest(*rows, {"ns_ratio_runs_differ"});
+    if (!speedup.second.empty() || !ratio.second.empty())
+        md += fmt::format(" Repeatability: the two runs, each a cost table of its own, agree within {:.1f} % on every "
+                          "speed-up (largest difference: {}) and within {:.1f} % on every ns / direct (largest: {}).",
+                          100.0 * speedup.first, speedup.second, 100.0 * ratio.first, ratio.second);
+    md += " Instruction counts are exact: two counts of the same binary agree to the instruction.\n\n";
     return md;
+}
+
+std::map<std::string, double> instructions_per_body_step(const std::filesystem::path& dir) {
+    std::map<std::string, double> found;
+    if (const auto rows = read_rows(dir))
+        for (const Row& r : *rows)
+            if (r.count("instr_alone") && !r.at("instr_alone").empty()) found[r.at("scheme")] = std::stod(r.at("instr_alone"));
+    return found;
 }
 
 }  // namespace rotbench

@@ -174,7 +174,7 @@ void scene_section(std::string& md, const std::string& scene_id, const std::vect
         md += "\n\n";
     }
     if (!entry.notes.empty()) md += entry.notes + "\n\n";
-    md += convergence_plots(scene_id, runs, dir);
+    md += convergence_plots(scene_id, runs, dir, instructions_per_body_step(dir));
 
     // Observed orders of each fitted metric, with the expected one where theory gives it.
     // Expected orders are known for torque-free scenes and orientation-dependent torques; a
