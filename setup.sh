@@ -8,7 +8,7 @@ set -euo pipefail
 cd "$(dirname "$0")"
 
 packages=(cmake ninja-build g++ libeigen3-dev libxsimd-dev catch2 libbenchmark-dev valgrind libboost-dev libgsl-dev libfmt-dev
-          libcli11-dev libtomlplusplus-dev gnuplot-nox)
+          libcli11-dev libtomlplusplus-dev gnuplot-nox python3)  # python3: benchmarks/cost.sh
 
 missing=()
 for p in "${packages[@]}"; do
@@ -28,7 +28,7 @@ cmake --build "$build" --parallel "$(nproc)"
 case "${1:-build}" in
   build)  ;;
   report) "$build/rotbench" run --out out/default --overwrite
-          benchmarks/cost.sh "$build" out/default          # the cost table (about 2 min)
+          benchmarks/cost.sh "$build" out/default          # the cost table (about 4 min)
           "$build/rotbench" report out/default
           echo "setup: report written to out/default/report.md" ;;
   test)   ctest --test-dir "$build" --output-on-failure --parallel "$(nproc)" --label-exclude slow ;;
