@@ -18,12 +18,14 @@ count() {  # "total libm" instructions (Ir) of one run
 import re, sys
 # Self cost of the functions in libm: cost lines under an `ob=` naming libm, except the line
 # after `calls=`, which is the inclusive cost of a call (callgrind format reference).
+# Object names are compressed: "(id) name" the first time, "(id)" after, in ob= and cob= alike.
 objects, current, total, call_cost = {}, "", 0, False
 for line in open(sys.argv[1]):
-    if line.startswith("ob="):
-        m = re.match(r"ob=\((\d+)\)(?: (.*))?", line.strip())
-        if m and m.group(2): objects[m.group(1)] = m.group(2)
-        current = objects.get(m.group(1), "") if m else line[3:].strip()
+    m = re.match(r"(c?ob)=(?:\((\d+)\))? ?(.*)", line.rstrip("\n"))
+    if m:
+        name = m.group(3) or objects.get(m.group(2), "")
+        if m.group(2): objects[m.group(2)] = name
+        if m.group(1) == "ob": current = name
     elif line.startswith("calls="):
         call_cost = True
     elif line[:1].isdigit() or line[:1] in "+-*":
