@@ -1,10 +1,11 @@
-set terminal svg size 800,480 dynamic noenhanced font 'sans,12'
+set terminal svg size 1200,480 dynamic noenhanced font 'sans,12'
 set logscale xy
 set format x '%g'
 set format y '%.0e'
 set grid
 set key outside right
 names = 'cayley direct exact_splitting fincham munjiza_rk4 no_gyro no_squish omelyan richardson rozmanov_kusalik spiral zvw zvw_corrected'
+titles = 'cayley(1.84x) direct(1.00x) exact_splitting(15.60x) fincham(0.99x) munjiza_rk4(1.83x) no_gyro(0.83x) no_squish(2.55x) omelyan(2.21x) richardson(1.30x) rozmanov_kusalik(2.77x) spiral(1.05x) zvw(1.29x) zvw_corrected(1.35x)'
 file = 'runs_cylinder_free.dat'
 set output 'convergence_cylinder_free.svg'
 set title 'cylinder_free: omega_err_max against dt'

@@ -1,18 +1,21 @@
-set terminal svg size 800,480 dynamic noenhanced font 'sans,12'
+set terminal svg size 1200,480 dynamic noenhanced font 'sans,12'
 set logscale xy
 set format x '%g'
 set format y '%.0e'
 set grid
 set key outside right
 names = 'cayley direct exact_splitting fincham munjiza_rk4 no_gyro no_squish omelyan richardson rozmanov_kusalik spiral zvw zvw_corrected'
+titles = 'cayley(1.84x) direct(1.00x) exact_splitting(15.60x) fincham(0.99x) munjiza_rk4(1.83x) no_gyro(0.83x) no_squish(2.55x) omelyan(2.21x) richardson(1.30x) rozmanov_kusalik(2.77x) spiral(1.05x) zvw(1.29x) zvw_corrected(1.35x)'
 file = 'runs_ellipsoid_pair.dat'
 set output 'work_precision_ellipsoid_pair.svg'
-set multiplot layout 1,2 title 'ellipsoid_pair: energy_drift_max against cost'
+set multiplot layout 1,3 title 'ellipsoid_pair: energy_drift_max against cost (legend: instructions per body-step / direct)'
 set xlabel 'CPU time (s)'
 set ylabel 'energy_drift_max'
 unset key
-plot for [i=1:words(names)] file index (i-1) using 3:2 with linespoints pt (7 - 2*((i-1)/8)) dt 1+(i-1)/8 ps 0.6 title word(names, i)
+plot for [i=1:words(names)] file index (i-1) using 3:2 with linespoints pt (7 - 2*((i-1)/8)) dt 1+(i-1)/8 ps 0.6 title word(titles, i)
 set xlabel 'force evaluations'
+plot for [i=1:words(names)] file index (i-1) using 4:2 with linespoints pt (7 - 2*((i-1)/8)) dt 1+(i-1)/8 ps 0.6 title word(titles, i)
+set xlabel 'scheme instructions (callgrind)'
 set key outside right
-plot for [i=1:words(names)] file index (i-1) using 4:2 with linespoints pt (7 - 2*((i-1)/8)) dt 1+(i-1)/8 ps 0.6 title word(names, i)
+plot for [i=1:words(names)] file index (i-1) using 5:2 with linespoints pt (7 - 2*((i-1)/8)) dt 1+(i-1)/8 ps 0.6 title word(titles, i)
 unset multiplot
