@@ -14,7 +14,7 @@
 #                          and writing the state alone takes;
 #   both ratios to `direct`, and how much each time ratio (speed-up, ns / direct) differs
 #   between the two runs: |run 1 / run 2 - 1|, the repeatability of the table.
-# Usage: benchmarks/cost.sh BUILD_DIR OUT_DIR   (writes OUT_DIR/cost.csv; about 4 min)
+# Usage: benchmarks/cost.sh BUILD_DIR OUT_DIR   (writes OUT_DIR/cost.csv; about 3 min)
 set -euo pipefail
 build=${1:?build dir}; out=${2:?output dir}
 here=$(cd "$(dirname "$0")" && pwd)
