@@ -153,7 +153,7 @@ private:
 // timing never uses the numbers.)
 class SampledTiming {
 public:
-    static constexpr std::int64_t whole = 20000, segments = 32;
+    static constexpr std::int64_t whole = timing_sample_steps, segments = 32;
 
     explicit SampledTiming(std::int64_t steps) : steps_(steps) {}
     bool sampled() const { return steps_ > whole; }
