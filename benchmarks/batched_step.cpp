@@ -86,10 +86,11 @@ const bool registered = [] {
 }  // namespace
 
 // The state's arrays (8 MB each at N = 1e6) come from the heap, not each from a mapping of its
-// own. glibc maps a large block at the same offset in its page every time, so the 20-odd
-// arrays a step reads and writes then compete for the same cache sets; whether it mapped
+// own. glibc maps a large block at the same offset in its page every time; whether it mapped
 // or reused the heap varied between repetitions, and the batched times were bimodal (direct:
-// 22 or 26 ns per body-step). From the heap the arrays lie at staggered offsets every time.
+// 26 ns per body-step with every array at the same page offset, 21-24 ns with staggered
+// ones; most likely the 20-odd arrays of a step then compete for the same cache sets).
+// From the heap the arrays lie at staggered offsets every time.
 int main(int argc, char** argv) {
     mallopt(M_MMAP_THRESHOLD, 1 << 30);
     mallopt(M_TRIM_THRESHOLD, 1 << 30);
