@@ -9,7 +9,7 @@
 set -euo pipefail
 build=${1:-build}; n=${2:-1000}; s=${3:-20}
 driver="$build/rotbench_step_driver"
-count() {  # "total libm" instructions (Ir) of one run
+count() {  # two numbers for one run: all its instructions (Ir), and those inside libm
     local out; out=$(mktemp)
     valgrind --tool=callgrind --callgrind-out-file="$out" "$driver" "$1" "$n" "$2" > /dev/null 2>&1
     local total libm
@@ -38,14 +38,17 @@ PY
     rm -f "$out"
     echo "$total $libm"
 }
+per_body_step() {  # the S extra steps' count (2S-step run minus S-step run) over N S
+    awk -v a="$1" -v b="$2" -v n="$n" -v s="$s" 'BEGIN {printf "%.1f", (b - a) / (n * s)}'
+}
 schemes=$("$build/rotbench" list | awk '/^schemes:/ {on=1; next} /^scenes:/ {on=0} on && /^  [a-z_0-9]+ / {print $1}')
 echo "scheme,instructions_per_body_step,ratio_to_direct,libm_instructions_per_body_step"
 declare -A per libm
 for scheme in $schemes; do
     read -r a a_libm < <(count "$scheme" "$s")
     read -r b b_libm < <(count "$scheme" $((2 * s)))
-    per[$scheme]=$(awk -v a="$a" -v b="$b" -v n="$n" -v s="$s" 'BEGIN {printf "%.1f", (b - a) / (n * s)}')
-    libm[$scheme]=$(awk -v a="$a_libm" -v b="$b_libm" -v n="$n" -v s="$s" 'BEGIN {printf "%.1f", (b - a) / (n * s)}')
+    per[$scheme]=$(per_body_step "$a" "$b")
+    libm[$scheme]=$(per_body_step "$a_libm" "$b_libm")
 done
 for scheme in $schemes; do
     awk -v x="${per[$scheme]}" -v d="${per[direct]}" -v m="${libm[$scheme]}" -v name="$scheme" \

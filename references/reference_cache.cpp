@@ -21,6 +21,8 @@ constexpr char magic[8] = {'R', 'B', 'T', 'R', 'J', '0', '0', '1'};
 // build from a modified tree (whose code the commit does not pin) keeps no disk cache at all.
 // (Before, a sample report reused references cached by a build without -ffp-contract=off and
 // differed from a fresh run in the 14th digit.)
+std::string stored_key(const std::string& run_key) { return run_key + "|build=" + cache_build_key(); }
+
 std::filesystem::path directory() {
     if (!build_is_pinned()) return "";
     if (const char* dir = std::getenv("ROTBENCH_CACHE")) return std::string(dir) == "off" ? "" : dir;
@@ -52,7 +54,7 @@ bool build_is_pinned() {
 }
 
 std::optional<Trajectory> load_cached(const std::string& scene_id, const std::string& run_key) {
-    const std::string key = run_key + "|build=" + cache_build_key();
+    const std::string key = stored_key(run_key);
     const auto path = file_for(scene_id, key);
     if (path.empty()) return std::nullopt;
     std::ifstream in(path, std::ios::binary);
@@ -73,7 +75,7 @@ std::optional<Trajectory> load_cached(const std::string& scene_id, const std::st
 }
 
 void store_cached(const std::string& scene_id, const std::string& run_key, const Trajectory& trajectory) {
-    const std::string key = run_key + "|build=" + cache_build_key();
+    const std::string key = stored_key(run_key);
     const auto path = file_for(scene_id, key);
     if (path.empty()) return;
     std::string bytes(magic, sizeof magic);
