@@ -35,23 +35,6 @@ std::vector<double> halving_ladder(double dt_max, int rungs, std::vector<double>
     return dts;
 }
 
-double translational_energy(const Bodies& b) {
-    double e = 0.0;
-    for (std::size_t i = 0; i < b.size(); ++i) e += 0.5 * b.mass[i] * b.velocity[i].squaredNorm();
-    return e;
-}
-
-double rotational_energy(const Bodies& b) {
-    double e = 0.0;
-    for (std::size_t i = 0; i < b.size(); ++i) {
-        const Vec3 w_body = to_body(b.orientation[i], b.omega[i]);
-        e += 0.5 * w_body.dot(b.inertia[i].cwiseProduct(w_body));
-    }
-    return e;
-}
-
-double kinetic_energy(const Bodies& b) { return translational_energy(b) + rotational_energy(b); }
-
 Vec3 total_angular_momentum(const Bodies& b) {
     Vec3 l = Vec3::Zero();
     for (std::size_t i = 0; i < b.size(); ++i)

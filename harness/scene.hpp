@@ -5,6 +5,7 @@
 #include "harness/params.hpp"
 #include "harness/registry.hpp"
 #include "schemes/bodies.hpp"
+#include "schemes/quaternion.hpp"
 
 #include <cstddef>
 #include <optional>
@@ -92,9 +93,21 @@ std::unique_ptr<Scene> make_scene(const std::string& id, const ParamOverrides& o
 // dt_max, dt_max/2, ..., rungs values in all, then `extra` (published steps) not already in.
 std::vector<double> halving_ladder(double dt_max, int rungs, std::vector<double> extra = {});
 
-double kinetic_energy(const Bodies& bodies);
-double translational_energy(const Bodies& bodies);
-double rotational_energy(const Bodies& bodies);
+// Inline: a scene's energy() runs at every step of a run.
+inline double translational_energy(const Bodies& b) {
+    double e = 0.0;
+    for (std::size_t i = 0; i < b.size(); ++i) e += 0.5 * b.mass[i] * b.velocity[i].squaredNorm();
+    return e;
+}
+inline double rotational_energy(const Bodies& b) {
+    double e = 0.0;
+    for (std::size_t i = 0; i < b.size(); ++i) {
+        const Vec3 w_body = to_body(b.orientation[i], b.omega[i]);
+        e += 0.5 * w_body.dot(b.inertia[i].cwiseProduct(w_body));
+    }
+    return e;
+}
+inline double kinetic_energy(const Bodies& b) { return translational_energy(b) + rotational_energy(b); }
 Vec3 total_angular_momentum(const Bodies& bodies);  // about the origin, world frame
 
 }  // namespace rotbench
