@@ -93,13 +93,13 @@ std::unique_ptr<Scene> make_scene(const std::string& id, const ParamOverrides& o
 // dt_max, dt_max/2, ..., rungs values in all, then `extra` (published steps) not already in.
 std::vector<double> halving_ladder(double dt_max, int rungs, std::vector<double> extra = {});
 
-// Inline: a scene's energy() runs at every step of a run.
-inline double translational_energy(const Bodies& b) {
+// Inlined: a scene's energy() runs at every step of a run.
+ROTBENCH_INLINE double translational_energy(const Bodies& b) {
     double e = 0.0;
     for (std::size_t i = 0; i < b.size(); ++i) e += 0.5 * b.mass[i] * b.velocity[i].squaredNorm();
     return e;
 }
-inline double rotational_energy(const Bodies& b) {
+ROTBENCH_INLINE double rotational_energy(const Bodies& b) {
     double e = 0.0;
     for (std::size_t i = 0; i < b.size(); ++i) {
         const Vec3 w_body = to_body(b.orientation[i], b.omega[i]);

@@ -101,7 +101,7 @@ public:
     }
 
 private:
-    static Vec3 fibre_axis(const Bodies& b) { return to_world(b.orientation[0], Vec3::UnitX()); }
+    ROTBENCH_INLINE static Vec3 fibre_axis(const Bodies& b) { return to_world(b.orientation[0], Vec3::UnitX()); }
     double potential(const Bodies& b) const { return mass_ * gravity_ * b.position[0].z(); }
     double elastic(const Bodies& b) const {  // Hertz potential: 8/15 E* sqrt(R) delta^(5/2)
         const double axis_z = fibre_axis(b).z();
