@@ -299,8 +299,8 @@ std::string markdown_report(const std::vector<RunResult>& results, const std::st
           "- `energy_drift_max`: max |E - E0|/|E0|; `energy_drift_rate`: slope (1/s) of the least-squares line "
           "through its running maximum, the secular drift. `momentum_drift_max`: max |L - L0|/|L0| (torque-free "
           "scenes). `quat_norm_err_max`: max ||q| - 1| (round-off only in the schemes that normalise q or keep it unit).\n"
-          "- `cpu_seconds` (median), `cpu_seconds_min`, `cpu_seconds_max` over `timing_repeats` timing runs after a "
-          "warm-up, on the per-thread CPU clock, without the metrics and the reference. A run of more than " +
+          "- `cpu_seconds` (median), `cpu_seconds_min`, `cpu_seconds_max` over `timing_repeats` timing runs made right "
+          "after the metrics run (their warm-up), on the per-thread CPU clock, without the metrics and the reference. A run of more than " +
           std::to_string(timing_sample_steps) + " steps is timed on 32 evenly spaced stretches of its own trajectory "
           "(`timed_steps` steps in all, each started from a state the metrics run kept) and scaled to its length; `ns_per_step` = `cpu_seconds` / `steps`.\n"
           "- `unstable`: 1 when the state became NaN/Inf, the energy error of a conservative scene passed 1e6 "
