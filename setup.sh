@@ -28,7 +28,7 @@ cmake --build "$build" --parallel "$(nproc)"
 case "${1:-build}" in
   build)  ;;
   report) "$build/rotbench" run --out out/default --overwrite
-          benchmarks/cost.sh "$build" out/default          # the cost table (about 3 min)
+          benchmarks/cost.sh "$build" out/default          # the cost table (about 5 min)
           "$build/rotbench" report out/default
           echo "setup: report written to out/default/report.md" ;;
   test)   ctest --test-dir "$build" --output-on-failure --parallel "$(nproc)" --label-exclude slow ;;

@@ -1,31 +1,50 @@
 #!/usr/bin/env bash
 # The cost table of the report: for every scheme, per body-step,
 #   ns_batched, ns_alone   Google Benchmark at N = 1e6 bodies (rotbench_bench): the batched
-#                          loops, and the same scheme one body at a time. Two consecutive runs
-#                          of 7 repetitions each, in random interleaved order (a slow spell of
-#                          the shared machine then falls on all schemes alike); medians of all
-#                          14, with their spread ((max - min) / median). (Rounds of one
-#                          repetition per process in a fixed order were tried: each benchmark
-#                          then met the same heap layout every time, and direct a slow one.)
+#                          loops, and the same scheme one body at a time; medians of all
+#                          repetitions, with their spread ((max - min) / median). Times differ
+#                          between processes (their pages, or the minute they run in) more than
+#                          repetitions average out: 40 repetitions in each of 3 processes gave
+#                          no_gyro speed-ups of 3.42, 3.55 and 3.48, and with 2 processes of 5
+#                          to 7 repetitions two consecutive tables were 3.2 % (no_gyro's
+#                          speed-up) and 4.7 % (fincham's) apart. So each benchmark runs in
+#                          10 processes of 3 repetitions, in random interleaved order
+#                          (a slow spell of the shared machine then falls on all alike);
+#                          a scheme of more than 5000 instructions per body-step (an iteration
+#                          of 1e6 bodies takes seconds: exact_splitting) in 2 of 4 repetitions.
+#                          (Rounds of one repetition per process in a fixed order were tried:
+#                          each benchmark then met the same heap layout every time, and direct
+#                          a slow one.)
 #   instr_batched, instr_alone   callgrind instruction counts (benchmarks/instructions.sh):
 #                          N = 1000 bodies, and one body; deterministic, whatever the load;
 #   libm_instr_alone       of instr_alone, those inside libm (sin, cos, ...);
 #   memory_share           load_store ns / ns_batched: the part of a batched step that reading
 #                          and writing the state alone takes;
 #   both ratios to `direct`, and how much each time ratio (speed-up, ns / direct) differs
-#   between the two runs: |run 1 / run 2 - 1|, the repeatability of the table.
-# Usage: benchmarks/cost.sh BUILD_DIR OUT_DIR   (writes OUT_DIR/cost.csv; about 3 min)
+#   between the two halves of the processes (odd and even, so both span the whole run):
+#   |half 1 / half 2 - 1|, the repeatability of the table.
+# Usage: benchmarks/cost.sh BUILD_DIR OUT_DIR   (writes OUT_DIR/cost.csv; about 3.5 min)
 set -euo pipefail
 build=${1:?build dir}; out=${2:?output dir}
 here=$(cd "$(dirname "$0")" && pwd)
 mkdir -p "$out"
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
-for run in 1 2; do
-    "$build/rotbench_bench" --benchmark_filter='/1000000$' --benchmark_min_time=0.1 --benchmark_repetitions=7 \
-        --benchmark_enable_random_interleaving=true --benchmark_format=csv > "$tmp/bench$run.csv" 2> /dev/null
-done
 "$here/instructions.sh" "$build" 1000 20 > "$tmp/batched.csv"
 "$here/instructions.sh" "$build" 1 2000 > "$tmp/alone.csv"
+slow=$(awk -F, 'NR > 1 && $2 > 5000 {printf "%s%s", sep, $1; sep = "|"}' "$tmp/alone.csv")
+bench() {  # FILTER PROCESSES REPETITIONS: one CSV per process, bench<k>.csv after those already there
+    for _ in $(seq "$2"); do
+        local k; k=$(find "$tmp" -name 'bench*.csv' | wc -l)
+        "$build/rotbench_bench" --benchmark_filter="$1" --benchmark_min_time=0.1 --benchmark_repetitions="$3" \
+            --benchmark_enable_random_interleaving=true --benchmark_format=csv > "$tmp/bench$((k + 1)).csv" 2> /dev/null
+    done
+}
+if [ -n "$slow" ]; then
+    bench "/($slow)/1000000\$" 2 4
+    bench "-/($slow)/|/1\$|/1000\$" 10 3   # a leading - excludes: the others, at N = 1e6 only
+else
+    bench '/1000000$' 10 3
+fi
 python3 - "$tmp" "$out/cost.csv" <<'PY'
 import csv, os, statistics, sys
 tmp, target = sys.argv[1], sys.argv[2]
@@ -38,7 +57,10 @@ def samples(path):   # benchmark -> its repetitions, ns per body-step
         if row["name"].endswith("/1000000"):   # aggregates (_mean, _median, ...) are recomputed below
             found.setdefault(row["name"][: -len("/1000000")], []).append(float(row["ns_per_body_step"]))
     return found
-runs = [samples(f"{tmp}/bench{r}.csv") for r in (1, 2)]
+runs = [{}, {}]  # processes 1, 3, 5, ... and 2, 4, 6, ...
+for k in range(1, len([p for p in os.listdir(tmp) if p.startswith("bench")]) + 1):
+    for name, values in samples(f"{tmp}/bench{k}.csv").items():
+        runs[(k - 1) % 2].setdefault(name, []).extend(values)
 pooled = {k: runs[0][k] + runs[1][k] for k in runs[0]}
 def instr(path):
     with open(path) as f:
