@@ -64,9 +64,10 @@ std::string cost_section(const std::filesystem::path& dir) {
                     "`rotbench report " + dir.string() + "` then includes it (README \"Speed\").\n\n";
     }
     md += "Each scheme stepping 1e6 bodies with random states and torques read from memory (`rotbench_bench`, "
-          "Google Benchmark: 10 processes of 3 repetitions in random interleaved order, since a time depends on where "
-          "the heap's pages fall, which is fixed within a process; a scheme of more than 5000 instructions per "
-          "body-step, 2 processes of 4; median of all repetitions, spread = (max - min) / median), batched and one body at a time through the scheme interface, and its "
+          "Google Benchmark: 10 processes of 3 repetitions in random interleaved order, since times differ between "
+          "processes more than repetitions average out; a scheme of more than 5000 instructions per body-step, 2 "
+          "processes of 4; median of all repetitions, spread = (max - min) / median), batched and one body at a time "
+          "through the scheme interface, and its "
           "instructions per body-step counted by callgrind (1000 bodies batched, and one body), which do not depend on "
           "the machine's load. `load_store` reads and writes the same state and computes nothing: the floor of the "
           "batched loops. The seed schemes step packs of four bodies (AVX2, `schemes/simd.hpp`); the others one body at "
@@ -90,8 +91,8 @@ std::string cost_section(const std::filesystem::path& dir) {
     md += fmt::format("\nLargest spread of a time over its repetitions: {:.1f} % ({}).", 100.0 * spread.first, spread.second);
     const auto speedup = largest(*rows, {"speedup_runs_differ"}), ratio = largest(*rows, {"ns_ratio_runs_differ"});
     if (!speedup.second.empty() || !ratio.second.empty())
-        md += fmt::format(" Repeatability: the odd and the even processes, each a cost table of its own, agree within {:.1f} % on every "
-                          "speed-up (largest difference: {}) and within {:.1f} % on every ns / direct (largest: {}).",
+        md += fmt::format(" Repeatability: the odd and the even processes, each a cost table of its own, agree within "
+                          "{:.1f} % on every speed-up (largest difference: {}) and within {:.1f} % on every ns / direct (largest: {}).",
                           100.0 * speedup.first, speedup.second, 100.0 * ratio.first, ratio.second);
     md += " Instruction counts are exact: two counts of the same binary agree to the instruction.\n\n";
     return md;
