@@ -23,7 +23,7 @@
 #   both ratios to `direct`, and how much each time ratio (speed-up, ns / direct) differs
 #   between the two halves of the processes (odd and even, so both span the whole run):
 #   |half 1 / half 2 - 1|, the repeatability of the table.
-# Usage: benchmarks/cost.sh BUILD_DIR OUT_DIR   (writes OUT_DIR/cost.csv; about 3.5 min)
+# Usage: benchmarks/cost.sh BUILD_DIR OUT_DIR   (writes OUT_DIR/cost.csv; about 5 min)
 set -euo pipefail
 build=${1:?build dir}; out=${2:?output dir}
 here=$(cd "$(dirname "$0")" && pwd)
@@ -32,11 +32,12 @@ tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 "$here/instructions.sh" "$build" 1000 20 > "$tmp/batched.csv"
 "$here/instructions.sh" "$build" 1 2000 > "$tmp/alone.csv"
 slow=$(awk -F, 'NR > 1 && $2 > 5000 {printf "%s%s", sep, $1; sep = "|"}' "$tmp/alone.csv")
-bench() {  # FILTER PROCESSES REPETITIONS: one CSV per process, bench<k>.csv after those already there
+processes=0
+bench() {  # FILTER PROCESSES REPETITIONS: one CSV per process, bench1.csv, bench2.csv, ...
     for _ in $(seq "$2"); do
-        local k; k=$(find "$tmp" -name 'bench*.csv' | wc -l)
+        processes=$((processes + 1))
         "$build/rotbench_bench" --benchmark_filter="$1" --benchmark_min_time=0.1 --benchmark_repetitions="$3" \
-            --benchmark_enable_random_interleaving=true --benchmark_format=csv > "$tmp/bench$((k + 1)).csv" 2> /dev/null
+            --benchmark_enable_random_interleaving=true --benchmark_format=csv > "$tmp/bench$processes.csv" 2> /dev/null
     done
 }
 if [ -n "$slow" ]; then
@@ -45,9 +46,9 @@ if [ -n "$slow" ]; then
 else
     bench '/1000000$' 10 3
 fi
-python3 - "$tmp" "$out/cost.csv" <<'PY'
+python3 - "$tmp" "$out/cost.csv" "$processes" <<'PY'
 import csv, os, statistics, sys
-tmp, target = sys.argv[1], sys.argv[2]
+tmp, target, processes = sys.argv[1], sys.argv[2], int(sys.argv[3])
 def samples(path):   # benchmark -> its repetitions, ns per body-step
     with open(path) as f:
         lines = f.read().splitlines()
@@ -58,7 +59,7 @@ def samples(path):   # benchmark -> its repetitions, ns per body-step
             found.setdefault(row["name"][: -len("/1000000")], []).append(float(row["ns_per_body_step"]))
     return found
 runs = [{}, {}]  # processes 1, 3, 5, ... and 2, 4, 6, ...
-for k in range(1, len([p for p in os.listdir(tmp) if p.startswith("bench")]) + 1):
+for k in range(1, processes + 1):
     for name, values in samples(f"{tmp}/bench{k}.csv").items():
         runs[(k - 1) % 2].setdefault(name, []).extend(values)
 pooled = {k: runs[0][k] + runs[1][k] for k in runs[0]}

@@ -269,7 +269,7 @@ RunResult run_one(const RunSpec& requested, const RunOptions& options) {
                 simulate(*scene, *scheme, bodies, dt, sampling.segment_steps(), evals,
                          [](std::int64_t, double, const Bodies&) { return !interrupt_signal(); }, start.step);
             }
-        }, WarmUp::already_warm);  // by the metrics run, just made
+        });  // warm: the metrics run has just made the same steps (harness/timing.hpp)
         const double scale = static_cast<double>(steps) / static_cast<double>(timed_steps);
         cpu = {cpu.median * scale, cpu.min * scale, cpu.max * scale, cpu.repeats};
     }

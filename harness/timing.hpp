@@ -18,36 +18,25 @@ struct CpuTiming {
     int repeats = 0;
 };
 
-// Whether the first call of the work is a warm-up to discard. A run is timed right after its
-// metrics run, which has already stepped the same scheme on the same scene: caches, branch
-// predictors and pages are warm. Without the warm-up the default suite's ns_per_step had
-// median ratio 1.000 to with it (805 runs; 5-95 % range 0.93-1.05, as two runs of the same
-// setting: 0.96-1.07), and the suite took 2 CPU-s (4 %) less.
-enum class WarmUp { discard_first_call, already_warm };
-
 // Median CPU time of `work`; repeats at least `min_repeats` times and until `min_total`
-// seconds were measured (at most 31 repeats).
+// seconds were measured (at most 31 repeats). No call is discarded as a warm-up: the caller
+// times a run right after its metrics run, which has already stepped the same scheme on the
+// same scene (caches, branch predictors and pages are warm). Without a warm-up call the
+// default suite's ns_per_step had median ratio 1.000 to with one (805 runs; 5-95 % range
+// 0.93-1.05, as two runs of the same setting: 0.96-1.07), and the suite took 2 CPU-s less.
 // 3 ms and 10 ms gave the same ns_per_step (ratio over the 655 short runs of the default
 // suite whose timing this floor sets: median 1.00, 5-95 % range 0.98-1.05); 10 ms cost
 // 2.5 CPU-s more, 50 ms 30. 1 ms saved only 0.2 CPU-s more: most runs need 3 repeats anyway.
 // A call that takes longer than `long_call` seconds is measured once: its start-up costs are
 // amortised, and repeating it would only spend time.
 template <class Work>
-CpuTiming median_cpu_seconds(Work&& work, WarmUp warm_up = WarmUp::discard_first_call, int min_repeats = 3,
-                             double min_total = 0.003, double long_call = 0.5) {
-    const auto measure = [&] {
-        const double start = thread_cpu_seconds();
-        work();
-        return thread_cpu_seconds() - start;
-    };
+CpuTiming median_cpu_seconds(Work&& work, int min_repeats = 3, double min_total = 0.003, double long_call = 0.5) {
     std::vector<double> samples;
-    if (warm_up == WarmUp::discard_first_call) {
-        const double first = measure();
-        if (first > long_call) return {first, first, first, 1};
-    }
     double total = 0.0;
     while (samples.size() < 31 && (samples.size() < static_cast<std::size_t>(min_repeats) || total < min_total)) {
-        samples.push_back(measure());
+        const double start = thread_cpu_seconds();
+        work();
+        samples.push_back(thread_cpu_seconds() - start);
         total += samples.back();
         if (samples.size() == 1 && samples.front() > long_call) break;
     }

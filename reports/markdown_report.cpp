@@ -152,7 +152,8 @@ void summary_section(std::string& md, const std::vector<RunResult>& results, con
 }
 
 void scene_section(std::string& md, const std::string& scene_id, const std::vector<RunResult>& results,
-                   const std::vector<OrderRow>& orders, const std::filesystem::path& dir) {
+                   const std::vector<OrderRow>& orders, const std::filesystem::path& dir,
+                   const std::map<std::string, double>& instructions) {
     const auto& entry = SceneRegistry::instance().at(scene_id, "scene");
     std::vector<const RunResult*> runs;
     for (const auto& r : results)
@@ -174,7 +175,7 @@ void scene_section(std::string& md, const std::string& scene_id, const std::vect
         md += "\n\n";
     }
     if (!entry.notes.empty()) md += entry.notes + "\n\n";
-    md += convergence_plots(scene_id, runs, dir, instructions_per_body_step(dir));
+    md += convergence_plots(scene_id, runs, dir, instructions);
 
     // Observed orders of each fitted metric, with the expected one where theory gives it.
     // Expected orders are known for torque-free scenes and orientation-dependent torques; a
@@ -287,7 +288,9 @@ std::string markdown_report(const std::vector<RunResult>& results, const std::st
     summary_section(md, results, orders);
     md += ranking_section(results, orders);
     md += cost_section(dir);
-    for (const auto& scene : unique_in_order(results, &RunSpec::scene)) scene_section(md, scene, results, orders, dir);
+    const auto instructions = instructions_per_body_step(dir);  // the cost table, read once for every scene's plots
+    for (const auto& scene : unique_in_order(results, &RunSpec::scene))
+        scene_section(md, scene, results, orders, dir, instructions);
     table1_section(md, results);
     md += energy_series_section(results, dir);
     schemes_section(md, results);
