@@ -5,13 +5,13 @@
 // bodies, and every build without AVX2, runs the double code only.
 //
 // The pack's sin and cos are xsimd's, not glibc's: they agree to about an ulp, not bit for
-// bit, so a body stepped in a pack may differ from the same body stepped alone at round-off.
+// bit. Only rotations of more than a radian in one step call them (schemes/quaternion.hpp);
+// below that, a body stepped in a pack gets the same bits as the same body stepped alone.
 #pragma once
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <cmath>
-#include <type_traits>
 #include <utility>
 
 #if defined(__AVX2__) && defined(__FMA__) && __has_include(<xsimd/xsimd.hpp>)
@@ -23,6 +23,7 @@ inline Pack select(const Pack::batch_bool_type& condition, const Pack& if_true, 
     return xsimd::select(condition, if_true, if_false);
 }
 inline std::pair<Pack, Pack> sin_cos(const Pack& x) { return xsimd::sincos(x); }  // one range reduction for both
+inline bool any_lane(const Pack::batch_bool_type& condition) { return xsimd::any(condition); }
 }  // namespace rotbench
 
 // Eigen's matrices and quaternions of packs: the pack is a real number type, and a double
@@ -57,14 +58,7 @@ namespace rotbench {
 
 inline double select(bool condition, double if_true, double if_false) { return condition ? if_true : if_false; }
 inline std::pair<double, double> sin_cos(double x) { return {std::sin(x), std::cos(x)}; }  // GCC calls sincos
-
-// `condition ? if_true() : if_false()` for one body; for a pack, where lanes may go either
-// way, both are evaluated and each lane takes its own.
-template <class Condition, class IfTrue, class IfFalse>
-ROTBENCH_INLINE auto choose(const Condition& condition, IfTrue&& if_true, IfFalse&& if_false) {
-    if constexpr (std::is_same_v<Condition, bool>) return condition ? if_true() : if_false();
-    else return select(condition, if_true(), if_false());
-}
+inline bool any_lane(bool condition) { return condition; }  // a pack's lane, or the one body
 
 template <class S>
 using Vec3T = Eigen::Matrix<S, 3, 1>;
