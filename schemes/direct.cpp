@@ -25,7 +25,7 @@ namespace {
 template <bool Gyroscopic, class S>
 ROTBENCH_INLINE Vec3T<S> acceleration(const Vec3T<S>& omega_body, const Vec3T<S>& torque_body, const Vec3T<S>& inertia) {
     if constexpr (Gyroscopic) return euler_acceleration(omega_body, torque_body, inertia);
-    return torque_body.cwiseQuotient(inertia);
+    return torque_body.cwiseProduct(inertia.cwiseInverse());  // as euler_acceleration does
 }
 
 template <bool Gyroscopic, class S = double>
