@@ -25,14 +25,17 @@ namespace rotbench {
 // momentum `momentum` (= L^{n+1/2}); start also holds w^n and T^n.
 template <class Rotation>
 struct KickDriftKick {
+    // L is the scheme's variable, kept from step to step: L^n after a step, L^{n+1/2} between
+    // predict and correct. w is derived from it for the force model (and for output), and
+    // taking L back from w at every step would cost two frame changes and add round-off.
     struct Memory {
-        Vec3 momentum;  // L^{n+1/2}, world
+        Vec3 momentum;  // world
     };
 
-    static void start(const RigidBody&, Memory&) {}
+    static void start(const RigidBody& b, Memory& m) { m.momentum = momentum_from_omega(b.q, b.inertia, b.omega); }
 
     static void predict(RigidBody& b, Memory& m, double dt) {
-        m.momentum = momentum_from_omega(b.q, b.inertia, b.omega) + 0.5 * dt * b.torque;
+        m.momentum += 0.5 * dt * b.torque;
         b.q = Rotation::rotate(b, m.momentum, dt);
         b.omega = omega_from_momentum(b.q, b.inertia, m.momentum);  // what the force model sees
     }
