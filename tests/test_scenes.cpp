@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <limits>
 
 using namespace rotbench;
 
@@ -96,6 +97,30 @@ TEST_CASE("the fibre's Odeint reference conserves energy to 1e-9 relative (issue
         CHECK(worst < 1e-9);
         // The fibre starts without rotation; the bounces give it a good share of the energy.
         CHECK(rotational_energy(state_at(*scene, odeint, times.size() - 1)) > 0.1 * e0);
+    }
+}
+
+TEST_CASE("a NaN or Inf in any angular velocity or orientation component makes every scene's energy non-finite") {
+    // The run's blow-up test relies on it: beside the energy it tests the positions and
+    // velocities only (harness/run.cpp).
+    for (const auto& scene_id : SceneRegistry::instance().ids()) {
+        const auto scene = make_scene(scene_id);
+        for (const double bad : {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity(),
+                                 -std::numeric_limits<double>::infinity()}) {
+            for (int component = 0; component < 7; ++component) {
+                Bodies b = scene->initial_state();
+                const std::size_t body = b.size() - 1;
+                if (component < 3) {
+                    b.omega.set(body, b.omega[body] + bad * Vec3::Unit(component));
+                } else {
+                    Quat q = b.orientation[body];
+                    q.coeffs()[component - 3] = bad;
+                    b.orientation.set(body, q);
+                }
+                INFO(scene_id << ", component " << component << " = " << bad);
+                CHECK_FALSE(std::isfinite(scene->energy(b)));
+            }
+        }
     }
 }
 
