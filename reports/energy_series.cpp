@@ -1,5 +1,6 @@
 #include "reports/energy_series.hpp"
 
+#include "harness/parallel.hpp"
 #include "reports/gnuplot.hpp"
 #include "reports/output_files.hpp"
 #include "reports/seed_figures.hpp"
@@ -9,6 +10,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 #include <map>
+#include <thread>
 
 namespace rotbench {
 namespace {
@@ -104,8 +106,15 @@ std::string energy_series_section(const std::vector<RunResult>& results, const s
                      "energy, at its coarsest and finest step; the seed's Figures 9-11 show the same quantity for "
                      "the bouncing fibre at dt = 1e-7 and 1e-5. Data: `series/`, plots and their gnuplot scripts: "
                      "`plots/`.\n\n";
-    for (const auto& [key, runs] : groups) {
-        const auto& [scene, dt] = key;
+    // The groups on every core (gnuplot draws one plot per process); their parts join in order.
+    const std::vector<std::pair<std::pair<std::string, double>, std::vector<const RunResult*>>> group_list(groups.begin(),
+                                                                                                          groups.end());
+    std::vector<std::string> parts(group_list.size());
+    parallel_for(group_list.size(), static_cast<int>(std::max(1u, std::thread::hardware_concurrency())), [&](std::size_t g) {
+        const std::string& scene = group_list[g].first.first;
+        const double dt = group_list[g].first.second;
+        const std::vector<const RunResult*>& runs = group_list[g].second;
+        std::string& md = parts[g];
         for (const RunResult* r : runs) write_series(*r, dir / "series");
         const auto script = dir / "plots" / fmt::format("energy_{}_dt{}.gp", scene, dt_tag(dt));
         const bool drawn = draw_with_gnuplot(script, plot_script(scene, dt, runs));
@@ -141,7 +150,8 @@ std::string energy_series_section(const std::vector<RunResult>& results, const s
                                                         fmt::join(computed, " < ")));
         }
         md += "\n";
-    }
+    });
+    for (const auto& part : parts) md += part;
     md += energy_slopes(all_groups);
     return md;
 }
