@@ -5,8 +5,11 @@
 #include "reports/output_files.hpp"
 #include "reports/results_csv.hpp"
 
-#include <atomic>
+#include <cerrno>
+#include <fcntl.h>
 #include <fmt/format.h>
+#include <sstream>
+#include <stdexcept>
 #include <unistd.h>
 
 namespace rotbench {
@@ -24,9 +27,41 @@ std::string read_text(const fs::path& path) {
 
 std::string plan_line(const std::string& plan_id, std::size_t plan_size) { return fmt::format("{} {}\n", plan_id, plan_size); }
 
-bool is_run_directory(const fs::path& p) {
-    const std::string name = p.filename().string();
-    return !name.empty() && name.find_first_not_of("0123456789") == std::string::npos;
+// The records of the runs file that are whole, and the length they span: a kill while a
+// record was being appended leaves a cut one at the end, which is dropped (and cut off
+// the file when the run is resumed).
+struct Records {
+    std::map<std::size_t, RunResult> runs;
+    std::size_t whole_length = 0;
+};
+
+Records read_records(const fs::path& file) {
+    Records found;
+    const std::string text = read_file(file).value_or("");
+    std::size_t at = 0;
+    while (at < text.size()) {
+        const std::size_t line_end = text.find('\n', at);
+        if (line_end == std::string::npos) break;
+        std::istringstream header(text.substr(at, line_end - at));
+        std::string word;
+        std::size_t index = 0, lengths[3] = {0, 0, 0};
+        if (!(header >> word >> index >> lengths[0] >> lengths[1] >> lengths[2]) || word != "run") break;
+        const std::size_t body = line_end + 1;
+        const std::size_t end = body + lengths[0] + lengths[1] + lengths[2];
+        const std::string trailer = fmt::format("end {}\n", index);
+        if (end + trailer.size() > text.size() || text.compare(end, trailer.size(), trailer) != 0) break;
+        const std::string results = text.substr(body, lengths[0]), runs = text.substr(body + lengths[0], lengths[1]);
+        auto parsed = parse_results(results, runs, {}, file.string());
+        if (parsed.size() != 1) throw InputError(file.string() + ": a record that does not hold one run");
+        if (lengths[2] > 0)  // again, with the series under the name the run gives it
+            parsed = parse_results(results, runs,
+                                   {{series_file_name(parsed.front()), text.substr(body + lengths[0] + lengths[1], lengths[2])}},
+                                   file.string());
+        found.runs.insert_or_assign(index, std::move(parsed.front()));
+        at = end + trailer.size();
+        found.whole_length = at;
+    }
+    return found;
 }
 
 }  // namespace
@@ -55,6 +90,12 @@ Journal Journal::reopen(const fs::path& out_dir, const std::string& plan_id, std
     if (read_text(dir / "plan") != plan_line(plan_id, plan_size))
         throw InputError("--resume " + out_dir.string() + ": the sweep its command describes is not the one that was " +
                          "interrupted (a scheme, scene or plug-in changed); run it again with --overwrite");
+    // A record cut short by a kill would sit between the runs appended from now on: cut it off.
+    const fs::path runs = dir / "runs";
+    if (fs::exists(runs)) {
+        const std::size_t whole = read_records(runs).whole_length;
+        if (whole != fs::file_size(runs)) fs::resize_file(runs, whole);
+    }
     return Journal(dir);
 }
 
@@ -72,29 +113,27 @@ fs::path Journal::working_directory(const fs::path& out_dir) {
     return cwd;
 }
 
-std::map<std::size_t, RunResult> Journal::finished() const {
-    std::map<std::size_t, RunResult> runs;
-    for (const auto& entry : fs::directory_iterator(dir_)) {
-        if (!entry.is_directory()) continue;
-        if (!is_run_directory(entry.path())) {  // a run whose writing was cut short
-            fs::remove_all(entry.path());
-            continue;
-        }
-        auto results = read_results(entry.path());
-        if (results.size() != 1) throw InputError(entry.path().string() + ": expected one run");
-        runs.emplace(std::stoul(entry.path().filename().string()), std::move(results.front()));
-    }
-    return runs;
-}
+std::map<std::size_t, RunResult> Journal::finished() const { return read_records(dir_ / "runs").runs; }
 
 void Journal::record(std::size_t plan_index, const RunResult& result) const {
-    static std::atomic<unsigned long> serial{0};
-    const fs::path temporary = dir_ / fmt::format(".{}.{}.{}.tmp", plan_index, ::getpid(), serial++);
-    fs::create_directories(temporary);
-    write_file_atomically(temporary / "results.csv", results_csv({result}));
-    write_file_atomically(temporary / "runs.csv", runs_csv({result}));
-    write_energy_series({result}, temporary);
-    fs::rename(temporary, dir_ / fmt::format("{:06}", plan_index));
+    const std::string results = results_csv({result}), runs = runs_csv({result});
+    const std::string series = result.series.empty() ? "" : series_csv(result);
+    const std::string record = fmt::format("run {} {} {} {}\n{}{}{}end {}\n", plan_index, results.size(), runs.size(),
+                                           series.size(), results, runs, series, plan_index);
+    // One write(2) in append mode per record: records of several threads do not interleave.
+    const int fd = ::open((dir_ / "runs").c_str(), O_WRONLY | O_APPEND | O_CREAT | O_CLOEXEC, 0644);
+    if (fd < 0) throw std::runtime_error("cannot open " + (dir_ / "runs").string());
+    std::size_t written = 0;
+    while (written < record.size()) {
+        const ssize_t n = ::write(fd, record.data() + written, record.size() - written);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) {
+            ::close(fd);
+            throw std::runtime_error("cannot write " + (dir_ / "runs").string());
+        }
+        written += static_cast<std::size_t>(n);
+    }
+    ::close(fd);
 }
 
 void Journal::remove() const { fs::remove_all(dir_); }

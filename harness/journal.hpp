@@ -4,10 +4,14 @@
 //   command   the arguments of the run, one per line (what --resume runs again)
 //   cwd       the directory it was started in (relative paths in the arguments are from there)
 //   plan      the plan fingerprint and the number of runs
-//   NNNNNN/   one finished run (its index in the plan): results.csv, runs.csv, series/
-// A run's directory is written under a temporary name and renamed into place, which is
-// atomic, so a directory named by a number always holds a whole run. The journal goes once
-// the final outputs are written.
+//   runs      the finished runs, one record each, appended as they finish:
+//             "run INDEX R N S" (its index in the plan, then byte counts), R bytes of its
+//             results.csv, N of its runs.csv, S of its energy series (0: none), "end INDEX".
+// A record is appended by one write in append mode; only a kill in the middle of one can
+// leave it cut short, at the end of the file, and a cut record counts as not finished.
+// (One file for all runs: a directory of files per run made the file system allocate
+// thousands of inodes per sweep, 1-1.5 s of the default suite.) The journal goes once the
+// final outputs are written.
 #pragma once
 
 #include "harness/run.hpp"

@@ -13,15 +13,12 @@
 #include <thread>
 
 namespace rotbench {
-namespace {
 
-std::string dt_tag(double dt) { return fmt::format("{:g}", dt); }
-
-std::string series_file(const RunResult& r) {
-    return fmt::format("energy_{}_{}_dt{}.csv", r.spec.scene, r.spec.scheme, dt_tag(r.spec.dt));
+std::string series_file_name(const RunResult& r) {
+    return fmt::format("energy_{}_{}_dt{:g}.csv", r.spec.scene, r.spec.scheme, r.spec.dt);
 }
 
-void write_series(const RunResult& r, const std::filesystem::path& dir) {
+std::string series_csv(const RunResult& r) {
     std::string csv;
     for (std::size_t c = 0; c < r.series_columns.size(); ++c) csv += (c ? "," : "") + r.series_columns[c];
     csv += "\n";
@@ -29,7 +26,15 @@ void write_series(const RunResult& r, const std::filesystem::path& dir) {
         for (std::size_t c = 0; c < row.size(); ++c) csv += (c ? "," : "") + format_number(row[c]);
         csv += "\n";
     }
-    write_file_atomically(dir / series_file(r), csv);
+    return csv;
+}
+
+namespace {
+
+std::string dt_tag(double dt) { return fmt::format("{:g}", dt); }
+
+void write_series(const RunResult& r, const std::filesystem::path& dir) {
+    write_file_atomically(dir / series_file_name(r), series_csv(r));
 }
 
 std::string plot_script(const std::string& scene, double dt, const std::vector<const RunResult*>& runs) {
@@ -43,7 +48,7 @@ std::string plot_script(const std::string& scene, double dt, const std::vector<c
         scene, dt_tag(dt), scene, dt);
     for (std::size_t i = 0; i < runs.size(); ++i)
         s += fmt::format("{}'../series/{}' using 1:2 with lines lw 1.5 dt {} title '{}'", i ? ", \\\n     " : "",
-                         series_file(*runs[i]), i / 8 + 1, runs[i]->spec.scheme);  // 8 colours, then dashes
+                         series_file_name(*runs[i]), i / 8 + 1, runs[i]->spec.scheme);  // 8 colours, then dashes
     return s + "\n";
 }
 

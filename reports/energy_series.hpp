@@ -16,6 +16,10 @@ namespace rotbench {
 // (empty when no run recorded a series).
 std::string energy_series_section(const std::vector<RunResult>& results, const std::filesystem::path& dir);
 
+// A run's series file: its name (energy_SCENE_SCHEME_dtDT.csv, under series/) and its text.
+std::string series_file_name(const RunResult& r);
+std::string series_csv(const RunResult& r);
+
 // DIR/series/*.csv for every run that recorded a series (a shard keeps them all for merge).
 void write_energy_series(const std::vector<RunResult>& results, const std::filesystem::path& dir);
 

@@ -1,14 +1,15 @@
 #include "reports/results_csv.hpp"
 
 #include "harness/parse.hpp"
+#include "reports/energy_series.hpp"
 #include "reports/output_files.hpp"
 
 #include <algorithm>
 #include <charconv>
 #include <fmt/format.h>
-#include <fstream>
 #include <map>
 #include <optional>
+#include <sstream>
 #include <tuple>
 
 namespace rotbench {
@@ -41,68 +42,111 @@ std::string runs_csv(const std::vector<RunResult>& results) {
 
 namespace {
 
-std::vector<std::vector<std::string>> read_csv(const std::filesystem::path& path, const std::string& header) {
-    std::ifstream in(path);
-    if (!in) throw InputError("cannot read " + path.string());
+std::vector<std::vector<std::string>> read_csv(const std::string& text, const std::string& name, const std::string& header) {
+    std::istringstream in(text);
     std::string line;
-    if (!std::getline(in, line) || line != header)
-        throw InputError(path.string() + ":1: expected the header '" + header + "'");
+    if (!std::getline(in, line) || line != header) throw InputError(name + ":1: expected the header '" + header + "'");
     std::vector<std::vector<std::string>> rows;
     for (int number = 2; std::getline(in, line); ++number) {
         auto fields = split_commas(line);
         if (fields.size() != split_commas(header).size())
-            throw InputError(fmt::format("{}:{}: expected {} fields", path.string(), number, split_commas(header).size()));
+            throw InputError(fmt::format("{}:{}: expected {} fields", name, number, split_commas(header).size()));
         rows.push_back(std::move(fields));
     }
     return rows;
 }
 
-double number(const std::string& text, const std::filesystem::path& path) {
+std::vector<std::vector<std::string>> read_csv(const std::filesystem::path& path, const std::string& header) {
+    const auto text = read_file(path);
+    if (!text) throw InputError("cannot read " + path.string());
+    return read_csv(*text, path.string(), header);
+}
+
+double number(const std::string& text, const std::string& name) {
     double v = 0;
     const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
-    if (ec != std::errc() || ptr != text.data() + text.size()) throw InputError(path.string() + ": '" + text + "' is not a number");
+    if (ec != std::errc() || ptr != text.data() + text.size()) throw InputError(name + ": '" + text + "' is not a number");
     return v;
 }
 
 }  // namespace
 
-std::vector<RunResult> read_results(const std::filesystem::path& dir) {
+namespace {
+
+// The three parts of reading runs back, in the order the files depend on each other.
+std::vector<RunResult> parse_runs(const std::string& runs_text, const std::string& source) {
+    const std::string name = source + "/runs.csv";
     std::vector<RunResult> results;
-    std::map<std::tuple<std::string, std::string, double>, std::size_t> index;
-    for (const auto& f : read_csv(dir / "runs.csv", "scene,scheme,dt,t_end,params,failure")) {
+    for (const auto& f : read_csv(runs_text, name, "scene,scheme,dt,t_end,params,failure")) {
         RunResult r;
         r.spec.scene = f[0];
         r.spec.scheme = f[1];
-        r.spec.dt = number(f[2], dir / "runs.csv");
-        r.spec.t_end = number(f[3], dir / "runs.csv");
+        r.spec.dt = number(f[2], name);
+        r.spec.t_end = number(f[3], name);
         for (const auto& item : split_on(f[4], ';')) {
             if (item.empty()) continue;
             const auto eq = item.find('=');
             std::vector<double> values;
-            for (const auto& v : split_on(item.substr(eq + 1), ' ')) values.push_back(number(v, dir / "runs.csv"));
+            for (const auto& v : split_on(item.substr(eq + 1), ' ')) values.push_back(number(v, name));
             r.spec.params.push_back({item.substr(0, eq), values});
         }
         r.failure = f[5];
-        index[{r.spec.scene, r.spec.scheme, r.spec.dt}] = results.size();
         results.push_back(std::move(r));
     }
-    for (const auto& f : read_csv(dir / "results.csv", "scene,scheme,dt,metric,value")) {
-        const auto it = index.find({f[0], f[1], number(f[2], dir / "results.csv")});
-        if (it == index.end()) throw InputError((dir / "results.csv").string() + ": a run that runs.csv does not list");
-        results[it->second].metrics.emplace_back(f[3], number(f[4], dir / "results.csv"));
+    return results;
+}
+
+void add_metrics(const std::string& results_text, const std::string& source, std::vector<RunResult>& results) {
+    const std::string name = source + "/results.csv";
+    std::map<std::tuple<std::string, std::string, double>, std::size_t> index;
+    for (std::size_t i = 0; i < results.size(); ++i) index[{results[i].spec.scene, results[i].spec.scheme, results[i].spec.dt}] = i;
+    for (const auto& f : read_csv(results_text, name, "scene,scheme,dt,metric,value")) {
+        const auto it = index.find({f[0], f[1], number(f[2], name)});
+        if (it == index.end()) throw InputError(name + ": a run that runs.csv does not list");
+        results[it->second].metrics.emplace_back(f[3], number(f[4], name));
     }
+}
+
+void add_series(const std::map<std::string, std::string>& series, const std::string& source, std::vector<RunResult>& results) {
     for (auto& r : results) {  // energy series, where the run recorded one
-        const auto path = dir / "series" / fmt::format("energy_{}_{}_dt{:g}.csv", r.spec.scene, r.spec.scheme, r.spec.dt);
-        std::ifstream in(path);
+        const auto found = series.find(series_file_name(r));
+        if (found == series.end()) continue;
+        std::istringstream in(found->second);
+        const std::string name = source + "/series/" + found->first;
         std::string line;
-        if (!in || !std::getline(in, line)) continue;
+        if (!std::getline(in, line)) continue;
         r.series_columns = split_commas(line);
         while (std::getline(in, line)) {
             std::vector<double> row;
-            for (const auto& v : split_commas(line)) row.push_back(number(v, path));
+            for (const auto& v : split_commas(line)) row.push_back(number(v, name));
             r.series.push_back(std::move(row));
         }
     }
+}
+
+}  // namespace
+
+std::vector<RunResult> parse_results(const std::string& results_text, const std::string& runs_text,
+                                     const std::map<std::string, std::string>& series, const std::string& source) {
+    auto results = parse_runs(runs_text, source);
+    add_metrics(results_text, source, results);
+    add_series(series, source, results);
+    return results;
+}
+
+std::vector<RunResult> read_results(const std::filesystem::path& dir) {
+    auto text = [&](const std::filesystem::path& path) {
+        auto content = read_file(path);
+        if (!content) throw InputError("cannot read " + path.string());
+        return std::move(*content);
+    };
+    auto results = parse_runs(text(dir / "runs.csv"), dir.string());
+    add_metrics(text(dir / "results.csv"), dir.string(), results);
+    std::map<std::string, std::string> series;
+    std::error_code ec;
+    for (const auto& e : std::filesystem::directory_iterator(dir / "series", ec))
+        if (auto content = read_file(e.path())) series.emplace(e.path().filename().string(), std::move(*content));
+    add_series(series, dir.string(), results);
     return results;
 }
 
@@ -129,9 +173,9 @@ std::vector<RunResult> merge_shards(const std::vector<std::filesystem::path>& di
                              std::to_string(results.size()));
         for (std::size_t i = 0; i < rows.size(); ++i) {
             const auto& f = rows[i];
-            const int k = static_cast<int>(number(f[1], dir / "shard.csv")), n = static_cast<int>(number(f[2], dir / "shard.csv"));
-            const auto size = static_cast<std::size_t>(number(f[3], dir / "shard.csv"));
-            const auto index = static_cast<std::size_t>(number(f[4], dir / "shard.csv"));
+            const int k = static_cast<int>(number(f[1], (dir / "shard.csv").string())), n = static_cast<int>(number(f[2], (dir / "shard.csv").string()));
+            const auto size = static_cast<std::size_t>(number(f[3], (dir / "shard.csv").string()));
+            const auto index = static_cast<std::size_t>(number(f[4], (dir / "shard.csv").string()));
             if (plan.empty()) {
                 plan = f[0], shards = n, plan_size = size;
                 merged.resize(plan_size);

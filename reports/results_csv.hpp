@@ -5,6 +5,7 @@
 #include "harness/run.hpp"
 
 #include <filesystem>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,10 @@ std::string runs_csv(const std::vector<RunResult>& results);
 // Reads results.csv and runs.csv (and the energy series under series/) back. InputError
 // when a file is missing or malformed.
 std::vector<RunResult> read_results(const std::filesystem::path& dir);
+// The same from the files' texts (a run journal keeps them so), `series` mapping a series
+// file's name to its text; `source` stands for the directory in error messages.
+std::vector<RunResult> parse_results(const std::string& results_text, const std::string& runs_text,
+                                     const std::map<std::string, std::string>& series, const std::string& source);
 
 // shard.csv, written by `rotbench run --shard K/N` beside its results.csv and runs.csv:
 // header plan_id,shard,shards,plan_size,plan_index,scene,scheme,dt, a row per run of the

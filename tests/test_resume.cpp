@@ -1,10 +1,12 @@
 // Nothing lost (issue 8): a sweep killed or interrupted part-way keeps every run it
 // finished, and `rotbench run --resume DIR` ends with the files an uninterrupted run writes.
+#include "harness/journal.hpp"
 #include "tests/cli_helpers.hpp"
 
 #include <catch2/catch.hpp>
 #include <chrono>
 #include <csignal>
+#include <fstream>
 #include <sys/wait.h>
 #include <thread>
 #include <unistd.h>
@@ -19,11 +21,12 @@ const std::vector<std::string> sweep = {"run", "--scenes", "dipole_top,asymmetri
                                         "direct,zvw,no_squish,cayley", "--quick", "--jobs", "2"};
 constexpr std::size_t sweep_runs = 48;
 
+// The whole records of the journal's runs file (harness/journal.hpp): each ends with a line "end INDEX".
 std::size_t finished_runs(const fs::path& journal) {
+    std::ifstream in(journal / "runs");
     std::size_t n = 0;
-    std::error_code ec;
-    for (const auto& e : fs::directory_iterator(journal, ec))
-        if (e.is_directory() && e.path().filename().string()[0] != '.') ++n;
+    for (std::string line; std::getline(in, line);)
+        if (line.rfind("end ", 0) == 0 && !in.eof()) ++n;  // a last line without its line break is cut short
     return n;
 }
 
@@ -116,5 +119,30 @@ TEST_CASE("run --resume: bad uses are refused with one line") {
     CHECK(changed.status == 2);
     CHECK(one_line(changed.err));
     CHECK_THAT(changed.err, Catch::Contains("is not the one that was interrupted"));
+    fs::remove_all(dir);
+}
+
+TEST_CASE("a journal record cut short by a kill counts as not finished and is cut off on resume") {
+    const fs::path dir = fresh_dir("journal_cut");
+    const RunResult a = run_one({"dipole_top", "direct", 1e-3, 0.01}, {.measure_time = false, .series_samples = 10});
+    const RunResult b = run_one({"asymmetric_free", "zvw", 1e-2, 0.1}, {.measure_time = false});
+    REQUIRE_FALSE(a.series.empty());
+    {
+        const Journal journal = Journal::start(dir, {"run"}, "plan/1/1", 3);
+        journal.record(0, a);
+        journal.record(2, b);
+    }
+    const auto whole = fs::file_size(dir / "partial" / "runs");
+    std::ofstream(dir / "partial" / "runs", std::ios::app) << "run 1 500 60 0\nscene,scheme,dt,metric,value\ndipole_to";
+    const Journal resumed = Journal::reopen(dir, "plan/1/1", 3);
+    CHECK(fs::file_size(dir / "partial" / "runs") == whole);  // the cut record is gone
+    const auto runs = resumed.finished();
+    REQUIRE(runs.size() == 2);
+    CHECK(runs.at(0).spec.scheme == "direct");
+    CHECK(runs.at(0).series == a.series);  // the energy series comes back whole
+    CHECK(runs.at(0).value("energy_drift_max") == a.value("energy_drift_max"));
+    CHECK(runs.at(2).value("omega_rms_x") == b.value("omega_rms_x"));
+    resumed.record(1, b);
+    CHECK(resumed.finished().size() == 3);
     fs::remove_all(dir);
 }
