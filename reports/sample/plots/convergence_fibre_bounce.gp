@@ -5,16 +5,16 @@ set format y '%.0e'
 set grid
 set key outside right
 names = 'cayley direct exact_splitting fincham munjiza_rk4 no_gyro no_squish omelyan richardson rozmanov_kusalik spiral zvw zvw_corrected'
-titles = 'cayley(1.84x) direct(1.00x) exact_splitting(15.60x) fincham(0.99x) munjiza_rk4(1.83x) no_gyro(0.83x) no_squish(2.55x) omelyan(2.21x) richardson(1.30x) rozmanov_kusalik(2.77x) spiral(1.05x) zvw(1.29x) zvw_corrected(1.35x)'
+titles = 'cayley(1.97x) direct(1.00x) exact_splitting(18.47x) fincham(0.95x) munjiza_rk4(1.51x) no_gyro(0.79x) no_squish(2.81x) omelyan(2.51x) richardson(1.35x) rozmanov_kusalik(2.26x) spiral(0.98x) zvw(1.19x) zvw_corrected(1.26x)'
 file = 'runs_fibre_bounce.dat'
 set output 'convergence_fibre_bounce.svg'
 set title 'fibre_bounce: energy_drift_max against dt'
 set xlabel 'dt (s)'
 set ylabel 'energy_drift_max'
-e0 = 8.382764040668918e-06; d0 = 1.25e-06; lo = 1e-07; hi = 1e-05
+e0 = 8.382764040832872e-06; d0 = 1.25e-06; lo = 1e-07; hi = 1e-05
 slope(x, p) = (x >= lo && x <= hi) ? e0*(x/d0)**p : 1/0  # drawn over the data's dt only
 set xrange [lo/1.5:hi*1.5]
-set yrange [5.7451939875253446e-08/3:0.1970491268793682*3]
+set yrange [5.7451937743856605e-08/3:0.19704912687934048*3]
 set samples 200
 plot for [i=1:words(names)] file index (i-1) using 1:2 with linespoints pt (7 - 2*((i-1)/8)) dt 1+(i-1)/8 ps 0.6 title word(names, i), \
      slope(x, 1) dt 2 lc 'gray50' title 'slope 1', slope(x, 2) dt 3 lc 'gray30' title 'slope 2', \
