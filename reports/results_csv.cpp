@@ -69,10 +69,6 @@ double number(const std::string& text, const std::string& name) {
     return v;
 }
 
-}  // namespace
-
-namespace {
-
 // The three parts of reading runs back, in the order the files depend on each other.
 std::vector<RunResult> parse_runs(const std::string& runs_text, const std::string& source) {
     const std::string name = source + "/runs.csv";

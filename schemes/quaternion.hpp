@@ -35,10 +35,10 @@ ROTBENCH_INLINE Vec3T<S> to_body(const QuatT<S>& q, const Vec3Of<S>& v_world) { 
 // (both exceed 0.87 there). Summed by Estrin's scheme (pairs of terms, then pairs of pairs
 // with x^2 and x^4), whose dependent chain is three multiply-adds long where Horner's rule
 // is seven: the map lies on the critical path of every step, and fibre_bounce runs took
-// 4-10 % less time (direct, zvw, munjiza_rk4 at dt = 1e-7). The round-off is about an ulp: as accurate as sincos, with no call, no
-// square root and no division. With x as an argument they take doubles and packs alike, with
-// the same operations in the same order, so a body stepped in a pack gets the same bits as
-// one stepped alone.
+// 4-10 % less time (direct, zvw, munjiza_rk4 at dt = 1e-7). The round-off is about an ulp:
+// as accurate as sincos, with no call, no square root and no division. With x as an
+// argument they take doubles and packs alike, with the same operations in the same order,
+// so a body stepped in a pack gets the same bits as one stepped alone.
 inline constexpr double exp_map_series_max_h2 = 0.25;
 template <class S>
 ROTBENCH_INLINE S even_series(const S& x, const S& x2, const S& x4, const double (&c)[8]) {
