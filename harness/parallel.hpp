@@ -13,6 +13,9 @@
 
 namespace rotbench {
 
+// The cores this machine offers (at least 1): the default number of threads.
+inline int core_count() { return static_cast<int>(std::max(1u, std::thread::hardware_concurrency())); }
+
 template <class Work>
 void parallel_for(std::size_t count, int jobs, Work&& work) {
     std::atomic<std::size_t> next{0};

@@ -31,11 +31,12 @@ bool finite_translation(const Bodies& b) {
 // Accumulates the per-step errors and drifts of one run. Samples are the states after
 // each full step, t = dt, 2 dt, ..., N dt (the initial state is exact by construction).
 //
-// It runs at every one of the 2e8 steps of the default suite (about 30 ns of a fibre_bounce
-// step of 110-250 ns). So it keeps, per step, only the maxima of the raw
-// quantities (|E - E0|, |q|^2, |L - L0|^2, |w - w_ref|^2) and scales them, or takes their
-// square roots, once at the end. Correctly rounded division and sqrt are monotone, so the
-// maximum of the scaled values is the scaled maximum, bit for bit.
+// It runs at every one of the 2e8 steps of the default suite: with the scene's energy, 281
+// of the 979 instructions of a fibre_bounce step (callgrind, no_gyro). So it keeps, per
+// step, only the maxima of the raw quantities (|E - E0|, |q|^2, |L - L0|^2, |w - w_ref|^2)
+// and scales them, or takes their square roots, once at the end. Correctly rounded division
+// and sqrt are monotone, so the maximum of the scaled values is the scaled maximum, bit for
+// bit.
 class MetricsObserver {
 public:
     MetricsObserver(const Scene& scene, const Reference* reference, const Bodies& initial, std::int64_t series_stride)

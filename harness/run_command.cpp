@@ -3,6 +3,7 @@
 #include "harness/config.hpp"
 #include "harness/interrupt.hpp"
 #include "harness/journal.hpp"
+#include "harness/parallel.hpp"
 #include "harness/parse.hpp"
 #include "harness/shard.hpp"
 #include "harness/sweep.hpp"
@@ -14,7 +15,6 @@
 
 #include <algorithm>
 #include <fmt/format.h>
-#include <thread>
 
 namespace rotbench {
 namespace fs = std::filesystem;
@@ -35,7 +35,7 @@ SweepSpec sweep_spec(const RunOptionsText& o) {
 
 }  // namespace
 
-int RunOptionsText::default_jobs() { return static_cast<int>(std::max(1u, std::thread::hardware_concurrency())); }
+int RunOptionsText::default_jobs() { return core_count(); }
 
 void add_run_options(CLI::App& cmd, RunOptionsText& o) {
     cmd.add_option("--scenes", o.scenes, "comma list of scene ids (default: all)");

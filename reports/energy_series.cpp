@@ -10,7 +10,6 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 #include <map>
-#include <thread>
 
 namespace rotbench {
 
@@ -112,10 +111,9 @@ std::string energy_series_section(const std::vector<RunResult>& results, const s
                      "the bouncing fibre at dt = 1e-7 and 1e-5. Data: `series/`, plots and their gnuplot scripts: "
                      "`plots/`.\n\n";
     // The groups on every core (gnuplot draws one plot per process); their parts join in order.
-    const std::vector<std::pair<std::pair<std::string, double>, std::vector<const RunResult*>>> group_list(groups.begin(),
-                                                                                                          groups.end());
+    const std::vector group_list(groups.begin(), groups.end());
     std::vector<std::string> parts(group_list.size());
-    parallel_for(group_list.size(), static_cast<int>(std::max(1u, std::thread::hardware_concurrency())), [&](std::size_t g) {
+    parallel_for(group_list.size(), core_count(), [&](std::size_t g) {
         const std::string& scene = group_list[g].first.first;
         const double dt = group_list[g].first.second;
         const std::vector<const RunResult*>& runs = group_list[g].second;

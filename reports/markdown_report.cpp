@@ -21,7 +21,6 @@
 #include <fstream>
 #include <map>
 #include <set>
-#include <thread>
 
 namespace rotbench {
 namespace {
@@ -295,7 +294,7 @@ std::string markdown_report(const std::vector<RunResult>& results, const std::st
     // one process at a time otherwise. Each section is its own string; they join in order.
     const auto scenes = unique_in_order(results, &RunSpec::scene);
     std::vector<std::string> sections(scenes.size());
-    parallel_for(scenes.size(), static_cast<int>(std::max(1u, std::thread::hardware_concurrency())),
+    parallel_for(scenes.size(), core_count(),
                  [&](std::size_t i) { scene_section(sections[i], scenes[i], results, orders, dir, instructions); });
     for (const auto& section : sections) md += section;
     table1_section(md, results);
