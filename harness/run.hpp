@@ -35,7 +35,7 @@ struct RunResult {
 
 // A run of more steps than this is timed on a sample of its own trajectory of this many steps
 // (32 evenly spaced stretches, run.cpp); a shorter run is timed whole.
-inline constexpr std::int64_t timing_sample_steps = 20000;
+inline constexpr std::int64_t timing_sample_steps = 10000;
 
 // Number of steps for a duration: t_end / dt rounded to the nearest integer when it is
 // one to within 1e-9 relative, otherwise rounded up, so a run never stops short of t_end.
