@@ -15,7 +15,8 @@
 // K = R_F(0, m', 1) and m' = 1 - k^2 computed from the moments directly, so long runs
 // and states near the separatrix (m' -> 0) stay accurate.
 // Special cases: rotation about a principal axis (including any rotation of a sphere)
-// is steady; the separatrix (m' = 0) is the limit with K = infinity.
+// is steady; a symmetric top (two equal moments) is a space-fixed plus a body-fixed
+// constant rotation; the separatrix (m' = 0) is the limit with K = infinity.
 #pragma once
 
 #include "schemes/bodies.hpp"
@@ -47,6 +48,8 @@ private:
 
     bool steady_ = false;
     Vec3 omega_steady_world_;
+    bool symmetric_ = false;
+    Vec3 space_rate_, body_rate_, omega0_body_;  // L / A (world), (1/C - 1/A) L_k e_k (body), w(0) (body)
     Quat q0_;
     Eigen::Matrix3d to_canonical_;  // P: body -> canonical (a, b, s) coordinates, det +1
     Quat q_canonical_;              // quaternion of P
