@@ -5,7 +5,7 @@ set format y '%.0e'
 set grid
 set key outside right
 names = 'cayley direct exact_splitting fincham munjiza_rk4 no_gyro no_squish omelyan richardson rozmanov_kusalik spiral zvw zvw_corrected'
-titles = 'cayley(1.97x) direct(1.00x) exact_splitting(18.47x) fincham(0.95x) munjiza_rk4(1.51x) no_gyro(0.79x) no_squish(2.81x) omelyan(2.51x) richardson(1.35x) rozmanov_kusalik(2.26x) spiral(0.98x) zvw(1.19x) zvw_corrected(1.26x)'
+titles = 'cayley(1.97x) direct(1.00x) exact_splitting(18.55x) fincham(0.95x) munjiza_rk4(1.51x) no_gyro(0.79x) no_squish(2.81x) omelyan(2.51x) richardson(1.35x) rozmanov_kusalik(2.26x) spiral(0.98x) zvw(1.19x) zvw_corrected(1.26x)'
 file = 'runs_ellipsoid_pair.dat'
 set output 'convergence_ellipsoid_pair.svg'
 set title 'ellipsoid_pair: energy_drift_max against dt'

@@ -5,7 +5,7 @@ set format y '%.0e'
 set grid
 set key outside right
 names = 'cayley direct exact_splitting fincham munjiza_rk4 no_gyro no_squish omelyan richardson rozmanov_kusalik spiral zvw zvw_corrected'
-titles = 'cayley(1.97x) direct(1.00x) exact_splitting(18.47x) fincham(0.95x) munjiza_rk4(1.51x) no_gyro(0.79x) no_squish(2.81x) omelyan(2.51x) richardson(1.35x) rozmanov_kusalik(2.26x) spiral(0.98x) zvw(1.19x) zvw_corrected(1.26x)'
+titles = 'cayley(1.97x) direct(1.00x) exact_splitting(18.55x) fincham(0.95x) munjiza_rk4(1.51x) no_gyro(0.79x) no_squish(2.81x) omelyan(2.51x) richardson(1.35x) rozmanov_kusalik(2.26x) spiral(0.98x) zvw(1.19x) zvw_corrected(1.26x)'
 file = 'runs_torqued_cylinder.dat'
 set output 'convergence_torqued_cylinder.svg'
 set title 'torqued_cylinder: omega_err_max against dt'
@@ -14,7 +14,7 @@ set ylabel 'omega_err_max'
 e0 = 0.00042364075275332124; d0 = 0.00125; lo = 0.00015625; hi = 0.01
 slope(x, p) = (x >= lo && x <= hi) ? e0*(x/d0)**p : 1/0  # drawn over the data's dt only
 set xrange [lo/1.5:hi*1.5]
-set yrange [2.2740434865083345e-08/3:3.9126215018868264*3]
+set yrange [2.2740459560978464e-08/3:3.9126215018868264*3]
 set samples 200
 plot for [i=1:words(names)] file index (i-1) using 1:2 with linespoints pt (7 - 2*((i-1)/8)) dt 1+(i-1)/8 ps 0.6 title word(names, i), \
      slope(x, 1) dt 2 lc 'gray50' title 'slope 1', slope(x, 2) dt 3 lc 'gray30' title 'slope 2', \
