@@ -136,6 +136,8 @@ std::vector<RunResult> read_results(const std::filesystem::path& dir) {
         if (!content) throw InputError("cannot read " + path.string());
         return std::move(*content);
     };
+    // Not parse_results: runs.csv is parsed before results.csv is read, so that a malformed
+    // runs.csv is the error named even when results.csv is missing (tests/test_bad_input.cpp).
     auto results = parse_runs(text(dir / "runs.csv"), dir.string());
     add_metrics(text(dir / "results.csv"), dir.string(), results);
     std::map<std::string, std::string> series;
@@ -162,22 +164,23 @@ std::vector<RunResult> merge_shards(const std::vector<std::filesystem::path>& di
     std::vector<int> seen;
     std::vector<std::optional<RunResult>> merged;
     for (const auto& dir : dirs) {
+        const std::string name = (dir / "shard.csv").string();
         const auto rows = read_csv(dir / "shard.csv", "plan_id,shard,shards,plan_size,plan_index,scene,scheme,dt");
         const auto results = read_results(dir);
         if (rows.size() != results.size())
-            throw InputError((dir / "shard.csv").string() + ": lists " + std::to_string(rows.size()) + " runs, runs.csv " +
+            throw InputError(name + ": lists " + std::to_string(rows.size()) + " runs, runs.csv " +
                              std::to_string(results.size()));
         for (std::size_t i = 0; i < rows.size(); ++i) {
             const auto& f = rows[i];
-            const int k = static_cast<int>(number(f[1], (dir / "shard.csv").string())), n = static_cast<int>(number(f[2], (dir / "shard.csv").string()));
-            const auto size = static_cast<std::size_t>(number(f[3], (dir / "shard.csv").string()));
-            const auto index = static_cast<std::size_t>(number(f[4], (dir / "shard.csv").string()));
+            const int k = static_cast<int>(number(f[1], name)), n = static_cast<int>(number(f[2], name));
+            const auto size = static_cast<std::size_t>(number(f[3], name));
+            const auto index = static_cast<std::size_t>(number(f[4], name));
             if (plan.empty()) {
                 plan = f[0], shards = n, plan_size = size;
                 merged.resize(plan_size);
             }
             if (f[0] != plan || n != shards || size != plan_size)
-                throw InputError((dir / "shard.csv").string() + ": a slice of another sweep (plan " + f[0] + ", " +
+                throw InputError(name + ": a slice of another sweep (plan " + f[0] + ", " +
                                  std::to_string(n) + " shards) than the first directory's (plan " + plan + ", " +
                                  std::to_string(shards) + " shards)");
             if (i == 0) {
@@ -187,7 +190,7 @@ std::vector<RunResult> merge_shards(const std::vector<std::filesystem::path>& di
             }
             const RunResult& r = results[i];
             if (index >= plan_size || merged[index] || r.spec.scene != f[5] || r.spec.scheme != f[6])
-                throw InputError((dir / "shard.csv").string() + ": row " + std::to_string(i + 2) + " does not match runs.csv");
+                throw InputError(name + ": row " + std::to_string(i + 2) + " does not match runs.csv");
             merged[index] = r;
         }
     }
