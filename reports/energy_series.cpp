@@ -12,9 +12,14 @@
 #include <map>
 
 namespace rotbench {
+namespace {
+
+std::string dt_tag(double dt) { return fmt::format("{:g}", dt); }  // in every file name of this section
+
+}  // namespace
 
 std::string series_file_name(const RunResult& r) {
-    return fmt::format("energy_{}_{}_dt{:g}.csv", r.spec.scene, r.spec.scheme, r.spec.dt);
+    return fmt::format("energy_{}_{}_dt{}.csv", r.spec.scene, r.spec.scheme, dt_tag(r.spec.dt));
 }
 
 std::string series_csv(const RunResult& r) {
@@ -29,8 +34,6 @@ std::string series_csv(const RunResult& r) {
 }
 
 namespace {
-
-std::string dt_tag(double dt) { return fmt::format("{:g}", dt); }
 
 void write_series(const RunResult& r, const std::filesystem::path& dir) {
     write_file_atomically(dir / series_file_name(r), series_csv(r));
