@@ -5,4 +5,4 @@ execute_process(COMMAND git describe --always --dirty --abbrev=12 WORKING_DIRECT
 if(NOT ROTBENCH_GIT_COMMIT)
   set(ROTBENCH_GIT_COMMIT unknown)
 endif()
-configure_file(${SOURCE_DIR}/reports/build_info.hpp.in ${OUTPUT} @ONLY)
+configure_file(${SOURCE_DIR}/cmake/build_info.hpp.in ${OUTPUT} @ONLY)

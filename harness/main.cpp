@@ -1,4 +1,5 @@
-#include "harness/cli.hpp"
+// rotbench: dispatches to the verbs of harness/cli/, one file each.
+#include "harness/cli/cli.hpp"
 
 #include <iostream>
 

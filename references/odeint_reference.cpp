@@ -4,13 +4,10 @@
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 #include "references/odeint_reference.hpp"
 
-#include "references/reference_cache.hpp"
-#include "references/shared_trajectory.hpp"
 #include "schemes/quaternion.hpp"
 
 #include <algorithm>
 #include <boost/numeric/odeint.hpp>
-#include <fmt/format.h>
 #include <limits>
 #include <optional>
 
@@ -27,7 +24,7 @@ constexpr std::size_t block = 13;
 // The equations of motion of a scene, on a scratch copy of its bodies.
 class EquationsOfMotion {
 public:
-    explicit EquationsOfMotion(const Scene& scene) : scene_(scene), bodies_(scene.initial_state()) {}
+    explicit EquationsOfMotion(const Dynamics& scene) : scene_(scene), bodies_(scene.initial_state()) {}
 
     State initial() const {
         State y(block * bodies_.size());
@@ -85,7 +82,7 @@ public:
     std::vector<double> gaps(const State& y) { return scene_.contact_gaps(load(y)); }
 
 private:
-    const Scene& scene_;
+    const Dynamics& scene_;
     Bodies bodies_;
 };
 
@@ -171,7 +168,7 @@ void integrate_with_events(Controlled& controlled, EquationsOfMotion& system, St
 
 }  // namespace
 
-Trajectory integrate_scene(const Scene& scene, const std::vector<double>& times, OdeMethod method, double tolerance) {
+Trajectory integrate_scene(const Dynamics& scene, const std::vector<double>& times, OdeMethod method, double tolerance) {
     EquationsOfMotion system(scene);
     Trajectory out;
     out.bodies = system.bodies();
@@ -192,28 +189,14 @@ Trajectory integrate_scene(const Scene& scene, const std::vector<double>& times,
     return out;
 }
 
-std::shared_ptr<const Trajectory> odeint_reference(const Scene& scene, double dt, std::int64_t steps) {
-    const std::string key = fmt::format("odeint-fehlberg78|tol={}|dt={}|steps={}|{}", reference_tolerance, dt, steps,
-                                        scene.params.canonical());
-    return shared_trajectory(key, [&] {
-        const std::string& scene_id = scene.params.owner();
-        if (auto cached = load_cached(scene_id, key)) return std::move(*cached);
-        std::vector<double> times(static_cast<std::size_t>(steps) + 1);
-        for (std::size_t k = 0; k < times.size(); ++k) times[k] = static_cast<double>(k) * dt;  // as the run loop
-        Trajectory trajectory = integrate_scene(scene, times, OdeMethod::fehlberg78);
-        store_cached(scene_id, key, trajectory);
-        return trajectory;
-    });
-}
-
 std::vector<double> equally_spaced_times(double t_end, int samples) {
     std::vector<double> times(static_cast<std::size_t>(samples) + 1);
     for (int k = 0; k <= samples; ++k) times[k] = t_end * k / samples;
     return times;
 }
 
-CrossCheck cross_check(const Scene& scene, int samples, double tolerance) {
-    const std::vector<double> times = equally_spaced_times(scene.t_end(), samples);
+CrossCheck cross_check(const Dynamics& scene, double t_end, int samples, double tolerance) {
+    const std::vector<double> times = equally_spaced_times(t_end, samples);
     const Trajectory a = integrate_scene(scene, times, OdeMethod::fehlberg78, tolerance);
     const Trajectory b = integrate_scene(scene, times, OdeMethod::bulirsch_stoer, tolerance);
     double omega_scale = 0, position_scale = 0;

@@ -6,8 +6,6 @@
 
 #include "references/trajectory.hpp"
 
-#include <cstdint>
-#include <memory>
 #include <vector>
 
 namespace rotbench {
@@ -24,13 +22,8 @@ inline constexpr double reference_tolerance = 1e-14;
 // t_k = t_end k / samples, k = 0 .. samples.
 std::vector<double> equally_spaced_times(double t_end, int samples);
 
-Trajectory integrate_scene(const Scene& scene, const std::vector<double>& times, OdeMethod method,
+Trajectory integrate_scene(const Dynamics& scene, const std::vector<double>& times, OdeMethod method,
                            double tolerance = reference_tolerance);
-
-// The reference at t_k = k dt, k = 0..steps, by Fehlberg 7(8). Computed once per scene,
-// parameters, dt and steps: kept in memory for the process and on disk between runs
-// (references/reference_cache.hpp).
-std::shared_ptr<const Trajectory> odeint_reference(const Scene& scene, double dt, std::int64_t steps);
 
 // Largest difference between the two methods on `samples` + 1 equally spaced times over
 // [0, t_end]: angular velocity relative to its largest norm, orientation angle (rad),
@@ -38,6 +31,6 @@ std::shared_ptr<const Trajectory> odeint_reference(const Scene& scene, double dt
 struct CrossCheck {
     double omega_relative = 0, angle = 0, position = 0;
 };
-CrossCheck cross_check(const Scene& scene, int samples = 200, double tolerance = reference_tolerance);
+CrossCheck cross_check(const Dynamics& scene, double t_end, int samples = 200, double tolerance = reference_tolerance);
 
 }  // namespace rotbench

@@ -1,7 +1,7 @@
 // A reference trajectory sampled at t_k = k dt, k = 0..N, for every body of a scene.
 #pragma once
 
-#include "harness/scene.hpp"
+#include "references/dynamics.hpp"
 
 #include <cstddef>
 #include <vector>

@@ -1,8 +1,7 @@
 #include "reports/convergence_plots.hpp"
 
-#include "harness/scene.hpp"
 #include "reports/gnuplot.hpp"
-#include "reports/output_files.hpp"
+#include "harness/io/output_files.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -16,7 +15,7 @@ std::string plotted_error(const std::vector<const RunResult*>& runs) {
     return "energy_drift_max";
 }
 
-std::string convergence_plots(const std::string& scene, const std::vector<const RunResult*>& runs,
+std::string convergence_plots(const std::string& scene, std::size_t body_count, const std::vector<const RunResult*>& runs,
                               const std::filesystem::path& dir, const std::map<std::string, double>& instructions) {
     const std::string metric = plotted_error(runs);
     std::vector<std::string> schemes;
@@ -28,7 +27,7 @@ std::string convergence_plots(const std::string& scene, const std::vector<const 
     // plotted has a count.
     const bool counted = std::all_of(schemes.begin(), schemes.end(), [&](const auto& s) { return instructions.count(s); }) &&
                          instructions.count("direct");
-    const double bodies = static_cast<double>(make_scene(scene, runs.front()->spec.params)->initial_state().size());
+    const double bodies = static_cast<double>(body_count);
 
     // One block per scheme: dt, error, cpu seconds, force evaluations, scheme instructions (finite errors only).
     std::string data = fmt::format("# {}: dt {} cpu_seconds force_evals scheme_instructions, one block per scheme: {}\n",

@@ -3,7 +3,7 @@
 // scheme's instructions), one line per scheme, drawn by gnuplot.
 #pragma once
 
-#include "harness/run.hpp"
+#include "harness/engine/run.hpp"
 
 #include <filesystem>
 #include <map>
@@ -16,10 +16,10 @@ namespace rotbench {
 // otherwise energy_drift_max.
 std::string plotted_error(const std::vector<const RunResult*>& runs);
 
-// Writes DIR/plots/runs_<scene>.dat and the convergence and work-precision scripts and
+// `bodies`: the scene's number of bodies. Writes DIR/plots/runs_<scene>.dat and the convergence and work-precision scripts and
 // SVGs; returns the Markdown that shows them. `instructions`: per body-step, by scheme
 // (reports/cost_table.hpp); empty, or missing a scheme, leaves that panel out.
-std::string convergence_plots(const std::string& scene, const std::vector<const RunResult*>& runs,
+std::string convergence_plots(const std::string& scene, std::size_t bodies, const std::vector<const RunResult*>& runs,
                               const std::filesystem::path& dir, const std::map<std::string, double>& instructions = {});
 
 }  // namespace rotbench

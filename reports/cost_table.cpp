@@ -1,6 +1,6 @@
 #include "reports/cost_table.hpp"
 
-#include "reports/output_files.hpp"
+#include "harness/io/output_files.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,8 +1,8 @@
 #include "reports/energy_series.hpp"
 
-#include "harness/parallel.hpp"
+#include "harness/io/output_files.hpp"
+#include "harness/io/series_csv.hpp"
 #include "reports/gnuplot.hpp"
-#include "reports/output_files.hpp"
 #include "reports/seed_figures.hpp"
 
 #include <algorithm>
@@ -13,31 +13,6 @@
 
 namespace rotbench {
 namespace {
-
-std::string dt_tag(double dt) { return fmt::format("{:g}", dt); }  // in every file name of this section
-
-}  // namespace
-
-std::string series_file_name(const RunResult& r) {
-    return fmt::format("energy_{}_{}_dt{}.csv", r.spec.scene, r.spec.scheme, dt_tag(r.spec.dt));
-}
-
-std::string series_csv(const RunResult& r) {
-    std::string csv;
-    for (std::size_t c = 0; c < r.series_columns.size(); ++c) csv += (c ? "," : "") + r.series_columns[c];
-    csv += "\n";
-    for (const auto& row : r.series) {
-        for (std::size_t c = 0; c < row.size(); ++c) csv += (c ? "," : "") + format_number(row[c]);
-        csv += "\n";
-    }
-    return csv;
-}
-
-namespace {
-
-void write_series(const RunResult& r, const std::filesystem::path& dir) {
-    write_file_atomically(dir / series_file_name(r), series_csv(r));
-}
 
 std::string plot_script(const std::string& scene, double dt, const std::vector<const RunResult*>& runs) {
     std::string s = fmt::format(
@@ -82,7 +57,7 @@ std::string energy_slopes(const std::map<std::pair<std::string, double>, std::ve
 
 }  // namespace
 
-std::string energy_series_section(const std::vector<RunResult>& results, const std::filesystem::path& dir) {
+std::string energy_series_section(const std::vector<RunResult>& results, const std::filesystem::path& dir, const Executor& executor) {
     // Plotted per scene: the coarsest and the finest step, and the steps of the seed's figures.
     std::map<std::string, std::pair<double, double>> range;  // scene -> (finest, coarsest)
     for (const auto& r : results)
@@ -116,12 +91,12 @@ std::string energy_series_section(const std::vector<RunResult>& results, const s
     // The groups on every core (gnuplot draws one plot per process); their parts join in order.
     const std::vector group_list(groups.begin(), groups.end());
     std::vector<std::string> parts(group_list.size());
-    parallel_for(group_list.size(), core_count(), [&](std::size_t g) {
+    executor(group_list.size(), [&](std::size_t g) {
         const std::string& scene = group_list[g].first.first;
         const double dt = group_list[g].first.second;
         const std::vector<const RunResult*>& runs = group_list[g].second;
         std::string& md = parts[g];
-        for (const RunResult* r : runs) write_series(*r, dir / "series");
+        for (const RunResult* r : runs) write_series_file(*r, dir / "series");
         const auto script = dir / "plots" / fmt::format("energy_{}_dt{}.gp", scene, dt_tag(dt));
         const bool drawn = draw_with_gnuplot(script, plot_script(scene, dt, runs));
         md += fmt::format("### `{}`, dt = {:g} s\n\n", scene, dt);
@@ -160,13 +135,6 @@ std::string energy_series_section(const std::vector<RunResult>& results, const s
     for (const auto& part : parts) md += part;
     md += energy_slopes(all_groups);
     return md;
-}
-
-void write_energy_series(const std::vector<RunResult>& results, const std::filesystem::path& dir) {
-    if (std::none_of(results.begin(), results.end(), [](const RunResult& r) { return !r.series.empty(); })) return;
-    std::filesystem::create_directories(dir / "series");
-    for (const auto& r : results)
-        if (!r.series.empty()) write_series(r, dir / "series");
 }
 
 }  // namespace rotbench

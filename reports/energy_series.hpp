@@ -4,7 +4,8 @@
 // against the ordering the seed publishes.
 #pragma once
 
-#include "harness/run.hpp"
+#include "harness/engine/run.hpp"
+#include "reports/executor.hpp"
 
 #include <filesystem>
 #include <string>
@@ -13,14 +14,8 @@
 namespace rotbench {
 
 // Writes DIR/series/*.csv and DIR/plots/energy_*.{gp,svg}; returns the Markdown section
-// (empty when no run recorded a series).
-std::string energy_series_section(const std::vector<RunResult>& results, const std::filesystem::path& dir);
-
-// A run's series file: its name (energy_SCENE_SCHEME_dtDT.csv, under series/) and its text.
-std::string series_file_name(const RunResult& r);
-std::string series_csv(const RunResult& r);
-
-// DIR/series/*.csv for every run that recorded a series (a shard keeps them all for merge).
-void write_energy_series(const std::vector<RunResult>& results, const std::filesystem::path& dir);
+// (empty when no run recorded a series); the plots are drawn through `executor`.
+std::string energy_series_section(const std::vector<RunResult>& results, const std::filesystem::path& dir,
+                                  const Executor& executor = run_serially);
 
 }  // namespace rotbench

@@ -1,6 +1,6 @@
 #include "reports/gate_report.hpp"
 
-#include "reports/output_files.hpp"
+#include "harness/io/output_files.hpp"
 
 #include <algorithm>
 #include <fmt/format.h>

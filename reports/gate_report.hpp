@@ -2,7 +2,7 @@
 // check and scheme) and gate.csv.
 #pragma once
 
-#include "harness/gate.hpp"
+#include "harness/gate/gate.hpp"
 
 #include <string>
 #include <vector>

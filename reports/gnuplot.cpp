@@ -1,6 +1,6 @@
 #include "reports/gnuplot.hpp"
 
-#include "reports/output_files.hpp"
+#include "harness/io/output_files.hpp"
 
 #include <cstdlib>
 #include <fmt/format.h>

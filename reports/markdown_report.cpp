@@ -3,12 +3,11 @@
 #include "reports/cost_table.hpp"
 
 #include "build_info.hpp"
-#include "harness/parallel.hpp"
 #include "references/odeint_reference.hpp"
 #include "reports/convergence_plots.hpp"
 #include "reports/energy_series.hpp"
-#include "reports/expected_orders.hpp"
-#include "reports/orders.hpp"
+#include "harness/analysis/expected_orders.hpp"
+#include "harness/analysis/orders.hpp"
 #include "reports/ranking.hpp"
 #include "reports/seed_table1.hpp"
 
@@ -152,17 +151,16 @@ void summary_section(std::string& md, const std::vector<RunResult>& results, con
     md += "\n";
 }
 
-void scene_section(std::string& md, const std::string& scene_id, const std::vector<RunResult>& results,
+void scene_section(std::string& md, const SceneInfo& entry, const std::vector<RunResult>& results,
                    const std::vector<OrderRow>& orders, const std::filesystem::path& dir,
-                   const std::map<std::string, double>& instructions) {
-    const auto& entry = SceneRegistry::instance().at(scene_id, "scene");
+                   const std::map<std::string, double>& instructions, const std::vector<ExpectedOrder>& claimed) {
+    const std::string& scene_id = entry.id;
     std::vector<const RunResult*> runs;
     for (const auto& r : results)
         if (r.spec.scene == scene_id) runs.push_back(&r);
     md += fmt::format("## Scene `{}`\n\n{}. Source: {}. Duration {} s.\n\n", scene_id, entry.summary, entry.source,
                       runs.front()->spec.t_end);
-    const auto scene = make_scene(scene_id, runs.front()->spec.params);
-    switch (scene->reference_kind()) {
+    switch (entry.reference) {
         case Scene::ReferenceKind::closed_form: md += "Reference: closed form.\n\n"; break;
         case Scene::ReferenceKind::odeint:
             md += fmt::format("Reference: Boost.Odeint (Fehlberg 7(8), tolerance {:g}), sampled at every step.\n\n",
@@ -176,13 +174,14 @@ void scene_section(std::string& md, const std::string& scene_id, const std::vect
         md += "\n\n";
     }
     if (!entry.notes.empty()) md += entry.notes + "\n\n";
-    md += convergence_plots(scene_id, runs, dir, instructions);
+    md += convergence_plots(scene_id, entry.bodies, runs, dir, instructions);
 
     // Observed orders of each fitted metric, with the expected one where theory gives it.
     // Expected orders are known for torque-free scenes and orientation-dependent torques; a
     // torque fixed in the body (torqued_cylinder) is a third case, left without a claim.
-    const bool expectation = scene->has_reference() && (scene->conserves_angular_momentum() || scene->torque_depends_on_orientation());
-    const bool torque = scene->torque_depends_on_orientation();
+    const bool expectation =
+        entry.reference != Scene::ReferenceKind::none && (entry.conserves_angular_momentum || entry.torque_depends_on_orientation);
+    const bool torque = entry.torque_depends_on_orientation;
     const auto metrics = present(order_metrics, runs);
     std::vector<std::string> order_columns = {"expected"};
     for (const auto& m : metrics) order_columns.push_back("order of " + m);
@@ -191,7 +190,7 @@ void scene_section(std::string& md, const std::string& scene_id, const std::vect
         if (std::none_of(runs.begin(), runs.end(), [&](const RunResult* r) { return r->spec.scheme == scheme; })) continue;
         std::string expected = "—";
         if (expectation)
-            for (const auto& e : expected_orders())
+            for (const auto& e : claimed)
                 if (e.scheme == scheme && e.with_torque == torque) expected = std::to_string(e.order);
         md += fmt::format("| {} | {} |", scheme, expected);
         for (const auto& m : metrics) md += " " + order_cell(find_order(orders, scene_id, scheme, m)) + " |";
@@ -249,22 +248,22 @@ void table1_section(std::string& md, const std::vector<RunResult>& results) {
     md += "\n";
 }
 
-void schemes_section(std::string& md, const std::vector<RunResult>& results) {
+void schemes_section(std::string& md, const ResultSet& set, const std::vector<ExpectedOrder>& expected) {
     md += "## Schemes: sources, readings, and what each claims\n\n";
-    for (const auto& id : unique_in_order(results, &RunSpec::scheme)) {
-        if (!SchemeRegistry::instance().contains(id)) {
+    for (const auto& id : unique_in_order(set.runs, &RunSpec::scheme)) {
+        const SchemeInfo* s = set.scheme(id);
+        if (!s) {
             md += fmt::format("- **`{}`**: not registered in this rotbench (a plug-in? pass --plugin to describe it).\n", id);
             continue;
         }
-        const auto& s = SchemeRegistry::instance().at(id, "scheme");
-        md += fmt::format("- **`{}`**: {}. Source: {}.", id, s.summary, s.source);
-        if (!s.notes.empty()) md += " Reading: " + s.notes;
-        for (const auto& e : expected_orders())
+        md += fmt::format("- **`{}`**: {}. Source: {}.", id, s->summary, s->source);
+        if (!s->notes.empty()) md += " Reading: " + s->notes;
+        for (const auto& e : expected)
             if (e.scheme == id)
                 md += fmt::format(" Expected order {} {}: {}.", e.order, e.with_torque ? "with torque" : "without torque", e.reason);
-        if (s.extra.exact_without_torque) md += " Exact without torque (round-off only).";
-        if (s.extra.conserves_momentum) md += " Keeps the world angular momentum to round-off without torque.";
-        if (s.extra.bounded_energy) md += " No secular energy drift (symplectic or time-reversible).";
+        if (s->claims.exact_without_torque) md += " Exact without torque (round-off only).";
+        if (s->claims.conserves_momentum) md += " Keeps the world angular momentum to round-off without torque.";
+        if (s->claims.bounded_energy) md += " No secular energy drift (symplectic or time-reversible).";
         md += "\n";
     }
     md += "\n";
@@ -272,8 +271,11 @@ void schemes_section(std::string& md, const std::vector<RunResult>& results) {
 
 }  // namespace
 
-std::string markdown_report(const std::vector<RunResult>& results, const std::string& command_line,
-                            const std::filesystem::path& dir) {
+std::string markdown_report(const ResultSet& set, const std::string& command_line, const std::filesystem::path& dir,
+                            const Executor& executor) {
+    const std::vector<RunResult>& results = set.runs;
+    std::vector<ExpectedOrder> expected;
+    for (const auto& [id, info] : set.schemes) add_expected_orders(id, info.claims, expected);
     std::string md = "# rotbench report\n\n";
     md += fmt::format("rotbench {} (commit {}), {} {}, flags `{}`, on {}; generated {:%Y-%m-%d %H:%M} UTC.\n\n",
                       build_info::version, build_info::commit, build_info::compiler, build_info::build_type,
@@ -287,19 +289,19 @@ std::string markdown_report(const std::vector<RunResult>& results, const std::st
                       results.size(), unstable);
     const auto orders = observed_orders(results);
     summary_section(md, results, orders);
-    md += ranking_section(results, orders);
+    md += ranking_section(set, orders);
     md += cost_section(dir);
     const auto instructions = instructions_per_body_step(dir);  // the cost table, read once for every scene's plots
     // The scenes' sections on every core: most of their time is gnuplot drawing the plots,
     // one process at a time otherwise. Each section is its own string; they join in order.
     const auto scenes = unique_in_order(results, &RunSpec::scene);
     std::vector<std::string> sections(scenes.size());
-    parallel_for(scenes.size(), core_count(),
-                 [&](std::size_t i) { scene_section(sections[i], scenes[i], results, orders, dir, instructions); });
+    executor(scenes.size(),
+             [&](std::size_t i) { scene_section(sections[i], set.scene(scenes[i]), results, orders, dir, instructions, expected); });
     for (const auto& section : sections) md += section;
     table1_section(md, results);
-    md += energy_series_section(results, dir);
-    schemes_section(md, results);
+    md += energy_series_section(results, dir, executor);
+    schemes_section(md, set, expected);
     md += "## Metrics and the order fit\n\n"
           "- `omega_rms_x/y/z`: root mean square over all steps of the body-frame angular-velocity error "
           "(each solution in its own body frame), the seed's Table 1 quantity.\n"

@@ -2,7 +2,8 @@
 // computed values, and the readings of the seed's equations.
 #pragma once
 
-#include "harness/run.hpp"
+#include "harness/analysis/result_set.hpp"
+#include "reports/executor.hpp"
 
 #include <filesystem>
 #include <string>
@@ -10,8 +11,9 @@
 
 namespace rotbench {
 
-// Also writes the files the report links to (series, plots) under `dir`.
-std::string markdown_report(const std::vector<RunResult>& results, const std::string& command_line,
-                            const std::filesystem::path& dir);
+// Also writes the files the report links to (series, plots) under `dir`; the plots are drawn
+// through `executor`.
+std::string markdown_report(const ResultSet& set, const std::string& command_line, const std::filesystem::path& dir,
+                            const Executor& executor = run_serially);
 
 }  // namespace rotbench

@@ -1,6 +1,5 @@
 #include "reports/ranking.hpp"
 
-#include "schemes/scheme.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -34,7 +33,8 @@ CostToTolerance cost_to_tolerance(const std::vector<const RunResult*>& runs, con
     return {seconds_at(finest, dt), "extrapolated"};
 }
 
-std::string ranking_section(const std::vector<RunResult>& results, const std::vector<OrderRow>& orders) {
+std::string ranking_section(const ResultSet& set, const std::vector<OrderRow>& orders) {
+    const std::vector<RunResult>& results = set.runs;
     const std::vector<std::string> scenes = {"asymmetric_free", "dipole_top"};
     std::vector<std::string> schemes;
     for (const auto& r : results)
@@ -86,7 +86,7 @@ std::string ranking_section(const std::vector<RunResult>& results, const std::ve
             return fmt::format("{:.2e}{}", c.seconds, c.how == "interpolated" ? "" : " (" + c.how + ")");
         };
         std::string note;
-        if (SchemeRegistry::instance().contains(row.scheme) && !SchemeRegistry::instance().at(row.scheme, "scheme").extra.sound)
+        if (const SchemeInfo* info = set.scheme(row.scheme); info && !info->claims.sound)
             note = "negative control: does not converge";
         md += fmt::format("| {} | `{}` | {} | {} | {} | {} |\n", ++rank, row.scheme, show(row.costs[0]), show(row.costs[1]),
                           std::isfinite(row.score) ? fmt::format("{:.3g}", row.score / direct_score) : "—", note);

@@ -3,8 +3,8 @@
 // at a fixed error, the quantity a user choosing an integrator trades).
 #pragma once
 
-#include "harness/run.hpp"
-#include "reports/orders.hpp"
+#include "harness/analysis/orders.hpp"
+#include "harness/analysis/result_set.hpp"
 
 #include <string>
 #include <vector>
@@ -23,7 +23,7 @@ struct CostToTolerance {
 CostToTolerance cost_to_tolerance(const std::vector<const RunResult*>& runs, const OrderFit& fit, double tolerance);
 
 // Markdown: the ranking table and the rule it follows.
-std::string ranking_section(const std::vector<RunResult>& results, const std::vector<OrderRow>& orders);
+std::string ranking_section(const ResultSet& set, const std::vector<OrderRow>& orders);
 
 inline constexpr double ranking_tolerance = 1e-6;  // rad/s, omega_err_max: inside both ladders for second-order schemes
 

@@ -5,7 +5,7 @@
 // functions and Carlson's R_J) that also serves as the harness's reference: it lives once,
 // in references/free_rigid_body. Without torque the scheme is exact; with torque it is the
 // symplectic Strang splitting of kinetic and potential parts.
-#include "references/free_rigid_body.hpp"
+#include "schemes/detail/free_rigid_body.hpp"
 #include "schemes/kick_drift_kick.hpp"
 
 namespace rotbench {

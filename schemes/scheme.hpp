@@ -9,7 +9,7 @@
 // Translation is Velocity Verlet for every scheme and is done by the harness.
 #pragma once
 
-#include "harness/registry.hpp"
+#include "schemes/registry.hpp"
 #include "schemes/bodies.hpp"
 
 #include <memory>

@@ -1,9 +1,9 @@
 // Running the CLI in-process from a test: exit status, stdout and stderr as a user sees them.
 #pragma once
 
-#include "harness/cli.hpp"
-#include "harness/parse.hpp"
-#include "harness/run.hpp"
+#include "harness/cli/cli.hpp"
+#include "harness/io/parse.hpp"
+#include "harness/engine/run.hpp"
 
 #include <algorithm>
 #include <filesystem>

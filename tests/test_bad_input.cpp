@@ -3,6 +3,10 @@
 // that names the option, key or file (with line and column for TOML) and, for an unknown
 // id, lists the valid ones; and nothing is written. Gate-file mistakes have their own
 // table in test_gate.cpp, plug-ins in test_plugin.cpp, scene parameters in test_scenes.cpp.
+#include "harness/cli/verb.hpp"
+#include "harness/scenes/scene.hpp"
+#include "harness/scenes/stability_probe.hpp"
+#include "schemes/scheme.hpp"
 #include "tests/cli_helpers.hpp"
 
 #include <catch2/catch.hpp>
@@ -31,23 +35,33 @@ void check_rows(const std::vector<Row>& rows, const fs::path& out) {
     }
 }
 
+// The ids a registry holds, as the error lists them (every one, in its order).
+template <class R>
+std::string valid(const R& registry) {
+    return join(registry.ids(), ", ");
+}
+
 }  // namespace
 
 TEST_CASE("bad input: unknown ids are named and the valid ones listed") {
     const fs::path dir = fresh_dir("bad_ids");
     const std::string out = (dir / "out").string(), file = (dir / "out" / "x.csv").string();
+    const std::string scenes = valid(SceneRegistry::instance()), schemes = valid(SchemeRegistry::instance());
+    std::vector<std::string> stability_scenes;
+    for (const auto& id : SceneRegistry::instance().ids())
+        if (dynamic_cast<const StabilityProbe*>(make_scene(id).get())) stability_scenes.push_back(id);
     check_rows(
         {
-            {{"run", "--scenes", "cylinder", "--out", out}, "unknown scene 'cylinder'; valid scenes: asymmetric_free, cylinder_free"},
-            {{"run", "--schemes", "direct,verlet", "--out", out}, "unknown scheme 'verlet'; valid schemes: cayley, direct"},
-            {{"reference", "--scene", "nope", "--out", file}, "valid scenes: asymmetric_free"},
-            {{"trajectory", "--scene", "cylinder_free", "--scheme", "rk4", "--dt", "1e-3", "--out", file}, "valid schemes: cayley"},
-            {{"list", "--params", "nope"}, "valid scenes: asymmetric_free"},
-            {{"stability", "--scenes", "cylinder_free", "--out", out}, "not a stability scene; valid: ellipsoid_pair, fast_spin"},
-            {{"stability", "--schemes", "verlet", "--out", out}, "valid schemes: cayley"},
-            {{"run", "--set", "nope.mass=1", "--out", out}, "unknown scene 'nope'; valid scenes:"},
+            {{"run", "--scenes", "cylinder", "--out", out}, "unknown scene 'cylinder'; valid scenes: " + scenes},
+            {{"run", "--schemes", "direct,verlet", "--out", out}, "unknown scheme 'verlet'; valid schemes: " + schemes},
+            {{"reference", "--scene", "nope", "--out", file}, "valid scenes: " + scenes},
+            {{"trajectory", "--scene", "cylinder_free", "--scheme", "rk4", "--dt", "1e-3", "--out", file}, "valid schemes: " + schemes},
+            {{"list", "--params", "nope"}, "valid scenes: " + scenes},
+            {{"stability", "--scenes", "cylinder_free", "--out", out}, "not a stability scene; valid: " + join(stability_scenes, ", ")},
+            {{"stability", "--schemes", "verlet", "--out", out}, "valid schemes: " + schemes},
+            {{"run", "--set", "nope.mass=1", "--out", out}, "unknown scene 'nope'; valid scenes: " + scenes},
             {{"run", "--set", "cylinder_free.spin=1", "--out", out}, "unknown parameter 'cylinder_free.spin'"},
-            {{"frobnicate"}, "unknown command 'frobnicate'; valid commands: list, run"},
+            {{"frobnicate"}, "unknown command 'frobnicate'; valid commands: " + valid(VerbRegistry::instance())},
             {{"run", "--bogus", "--out", out}, "--bogus"},
         },
         dir / "out");

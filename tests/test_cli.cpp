@@ -1,5 +1,5 @@
-#include "harness/parse.hpp"
-#include "harness/run.hpp"
+#include "harness/io/parse.hpp"
+#include "harness/engine/run.hpp"
 #include "tests/cli_helpers.hpp"
 
 #include <algorithm>

@@ -1,6 +1,6 @@
-#include "harness/config.hpp"
-#include "harness/gate.hpp"
-#include "harness/export.hpp"
+#include "harness/io/config.hpp"
+#include "harness/gate/gate.hpp"
+#include "harness/engine/export.hpp"
 
 #include <catch2/catch.hpp>
 #include <filesystem>

@@ -5,7 +5,7 @@
 // (a false positive; the buffers are resized before use).
 #pragma GCC diagnostic ignored "-Wuninitialized"
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
-#include "references/free_rigid_body.hpp"
+#include "schemes/detail/free_rigid_body.hpp"
 #include "schemes/quaternion.hpp"
 
 #include <array>

@@ -1,6 +1,6 @@
 // `rotbench gate`: the default gate passes every sound scheme and fails the negative
 // control with its reason; bad gate files are answered with file, line and column.
-#include "harness/gate.hpp"
+#include "harness/gate/gate.hpp"
 #include "reports/gate_report.hpp"
 #include "schemes/scheme.hpp"
 #include "tests/cli_helpers.hpp"

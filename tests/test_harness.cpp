@@ -1,6 +1,6 @@
-#include "harness/run.hpp"
-#include "harness/sweep.hpp"
-#include "references/reference.hpp"
+#include "harness/engine/run.hpp"
+#include "harness/engine/sweep.hpp"
+#include "harness/engine/reference.hpp"
 #include "tests/cli_helpers.hpp"
 #include "schemes/quaternion.hpp"
 

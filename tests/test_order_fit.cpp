@@ -1,4 +1,4 @@
-#include "harness/order_fit.hpp"
+#include "harness/analysis/order_fit.hpp"
 
 #include <catch2/catch.hpp>
 #include <cmath>

@@ -1,6 +1,6 @@
 // Nothing lost (issue 8): a sweep killed or interrupted part-way keeps every run it
 // finished, and `rotbench run --resume DIR` ends with the files an uninterrupted run writes.
-#include "harness/journal.hpp"
+#include "harness/io/journal.hpp"
 #include "tests/cli_helpers.hpp"
 
 #include <catch2/catch.hpp>

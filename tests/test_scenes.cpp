@@ -1,8 +1,8 @@
 // Every scene against its reference engine, the engine against a second stepper, and
 // every registered scheme on every scene.
-#include "harness/run.hpp"
+#include "harness/engine/run.hpp"
 #include "references/odeint_reference.hpp"
-#include "references/reference_cache.hpp"
+#include "harness/io/reference_cache.hpp"
 #include "schemes/quaternion.hpp"
 
 #include <catch2/catch.hpp>
@@ -67,7 +67,8 @@ TEST_CASE("the Odeint reference agrees with Bulirsch-Stoer") {
     SECTION("smooth scenes: to 1e-11 (both run at tolerance 1e-14)") {
         for (const char* id : {"cylinder_free", "asymmetric_free", "torqued_cylinder", "dipole_top"}) {
             INFO(id);
-            const CrossCheck c = cross_check(*make_scene(id));
+            const auto scene = make_scene(id);
+            const CrossCheck c = cross_check(*scene, scene->t_end());
             CHECK(c.omega_relative < 1e-11);
             CHECK(c.angle < 1e-11);
         }
@@ -75,7 +76,8 @@ TEST_CASE("the Odeint reference agrees with Bulirsch-Stoer") {
     SECTION("fibre_bounce: to 1e-6 rad, 1e-7 in w, 1e-8 in position") {
         // Each bounce magnifies a difference between the two methods; what the two must
         // share is the physics (energy, next test) and the trajectory to these bounds.
-        const CrossCheck c = cross_check(*make_scene("fibre_bounce"));
+        const auto scene = make_scene("fibre_bounce");
+        const CrossCheck c = cross_check(*scene, scene->t_end());
         CHECK(c.omega_relative < 1e-7);
         CHECK(c.angle < 1e-6);
         CHECK(c.position < 1e-8);

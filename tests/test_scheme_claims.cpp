@@ -1,11 +1,11 @@
 // Every registered scheme states what it claims (schemes/scheme.hpp, SchemeClaims): its
 // order with and without torque, exactness, momentum conservation. These tests hold each
 // scheme to its own claims, so a new scheme is tested by registering it.
-#include "harness/run.hpp"
-#include "references/free_rigid_body.hpp"
+#include "harness/engine/run.hpp"
+#include "schemes/detail/free_rigid_body.hpp"
 #include "schemes/quaternion.hpp"
-#include "reports/expected_orders.hpp"
-#include "reports/orders.hpp"
+#include "harness/analysis/expected_orders.hpp"
+#include "harness/analysis/orders.hpp"
 
 #include <catch2/catch.hpp>
 #include <cmath>

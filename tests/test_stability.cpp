@@ -2,8 +2,8 @@
 // predictions of Peng et al. (seed 004). The findings are pinned so they cannot change
 // silently.
 #include "harness/scenes/contact_pair.hpp"
-#include "harness/stability.hpp"
-#include "harness/stability_study.hpp"
+#include "harness/analysis/stability.hpp"
+#include "harness/analysis/stability_study.hpp"
 #include "schemes/scheme.hpp"
 
 #include <catch2/catch.hpp>

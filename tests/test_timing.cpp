@@ -1,6 +1,6 @@
 // How runs are timed and what they share: the timing sample and the shared references.
-#include "harness/run.hpp"
-#include "references/shared_trajectory.hpp"
+#include "harness/engine/run.hpp"
+#include "harness/engine/shared_trajectory.hpp"
 
 #include <atomic>
 #include <catch2/catch.hpp>

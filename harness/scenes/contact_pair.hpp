@@ -9,8 +9,8 @@
 // The bodies start at rest but for a small relative velocity that excites every mode.
 #pragma once
 
-#include "harness/scene.hpp"
-#include "harness/stability.hpp"
+#include "harness/scenes/scene.hpp"
+#include "harness/scenes/stability_probe.hpp"
 #include "references/critical_time_step.hpp"
 #include "schemes/quaternion.hpp"
 

@@ -4,9 +4,9 @@
 // Exact answer: w'x = sin 50t, w'y = cos 50t, w'z = 100 (the seed's eq. 65b prints sin
 // for w'y; cos is what Euler's equations give for this start), and the closed-form
 // orientation of FreeRigidBody.
-#include "harness/scene.hpp"
+#include "harness/scenes/scene.hpp"
 #include "harness/scenes/single_body.hpp"
-#include "references/free_rigid_body.hpp"
+#include "schemes/detail/free_rigid_body.hpp"
 
 #include <optional>
 

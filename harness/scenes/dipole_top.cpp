@@ -2,7 +2,7 @@
 // field B: torque T = mu_world x B, which depends on the orientation, so it exercises a
 // scheme's torque re-estimate. Energy 1/2 w'.I'w' - mu_world.B is conserved, and so is
 // the component of the angular momentum along B. Reference: Odeint.
-#include "harness/scene.hpp"
+#include "harness/scenes/scene.hpp"
 #include "harness/scenes/single_body.hpp"
 #include "schemes/quaternion.hpp"
 

@@ -2,7 +2,7 @@
 // eq. 54), spinning at omega_max about its major axis (stable: no physical flips) with a
 // 1 % wobble, for the rotation-dominant critical step of seed 004 eq. 57, 1/(w_max B_max).
 #include "harness/scenes/free_top.hpp"
-#include "harness/stability.hpp"
+#include "harness/scenes/stability_probe.hpp"
 #include "references/critical_time_step.hpp"
 
 #include <numbers>

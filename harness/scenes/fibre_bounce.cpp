@@ -6,7 +6,7 @@
 // damping; gravity 9.81 m/s^2; centre 0.5 m above the floor, axis tilted 30 degrees from
 // horizontal in the vertical x-z plane. The true motion conserves the total energy
 // (translational + rotational + potential + elastic) exactly.
-#include "harness/scene.hpp"
+#include "harness/scenes/scene.hpp"
 #include "harness/scenes/single_body.hpp"
 #include "schemes/quaternion.hpp"
 

@@ -3,9 +3,9 @@
 // A scene declares its parameters and says how to read the initial angular velocity.
 #pragma once
 
-#include "harness/scene.hpp"
+#include "harness/scenes/scene.hpp"
 #include "harness/scenes/single_body.hpp"
-#include "references/free_rigid_body.hpp"
+#include "schemes/detail/free_rigid_body.hpp"
 
 #include <optional>
 

@@ -1,7 +1,7 @@
 // What the one-body scenes build alike: the body itself, and the solid cylinder.
 #pragma once
 
-#include "harness/params.hpp"
+#include "harness/scenes/params.hpp"
 #include "schemes/bodies.hpp"
 
 #include <numbers>

@@ -3,7 +3,7 @@
 // Angular velocity in closed form: w'z = w'z0 + (tau/I_a) t, and (w'x + i w'y) turns by
 // -kappa Phi(t), kappa = (I_t - I_a)/I_t, Phi = int w'z dt = w'z0 t + tau t^2 / (2 I_a).
 // The orientation has no elementary closed form: it comes from Odeint.
-#include "harness/scene.hpp"
+#include "harness/scenes/scene.hpp"
 #include "harness/scenes/single_body.hpp"
 #include "schemes/quaternion.hpp"
 

@@ -1,9 +1,9 @@
 // libFuzzer target: the parsers of option values — number lists (--dt, --zeta), id lists
 // (--scenes, --schemes), --shard K/N, and --set SCENE.KEY=VALUE followed by the plan of the
 // sweep it sets up (the scene checks the value).
-#include "harness/config.hpp"
-#include "harness/parse.hpp"
-#include "harness/shard.hpp"
+#include "harness/io/config.hpp"
+#include "harness/io/parse.hpp"
+#include "harness/io/shard.hpp"
 #include "tests/fuzz/fuzz_input.hpp"
 
 using namespace rotbench;

@@ -3,7 +3,7 @@
 // a hang) is a bug that libFuzzer reports and keeps the input of.
 #pragma once
 
-#include "harness/registry.hpp"
+#include "schemes/registry.hpp"
 
 #include <cstddef>
 #include <cstdint>

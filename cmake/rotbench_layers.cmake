@@ -1,0 +1,44 @@
+# The layers of rotbench (docs/architecture.md), bottom up:
+#   schemes -> references -> harness -> reports -> cli
+# Each is an OBJECT library that sees, through its include tree, only its own folders and those
+# of the layers it links. An include tree is a directory of the build holding symbolic links
+# to the folders a layer owns, so that `#include "harness/..."` in a scheme finds nothing and
+# does not build (tests/layering checks it).
+
+set(ROTBENCH_LAYERS_DIR ${CMAKE_BINARY_DIR}/layers)
+
+# rotbench_include_tree(<tree> <folder>...): links each source folder into layers/<tree>.
+function(rotbench_include_tree tree)
+  foreach(folder IN LISTS ARGN)
+    set(link ${ROTBENCH_LAYERS_DIR}/${tree}/${folder})
+    get_filename_component(parent ${link} DIRECTORY)
+    file(MAKE_DIRECTORY ${parent})
+    if(NOT IS_SYMLINK ${link})
+      file(CREATE_LINK ${CMAKE_SOURCE_DIR}/${folder} ${link} SYMBOLIC)
+    endif()
+  endforeach()
+endfunction()
+
+# rotbench_layer(<target> TREE <tree> FOLDERS <folder>... [SOURCES_IN <folder>...] [LINKS <target>...]):
+# an OBJECT library of every .cpp in the folders (or in SOURCES_IN, subfolders included),
+# seeing its own tree and those of the layers it links.
+function(rotbench_layer target)
+  cmake_parse_arguments(ARG "" "TREE" "FOLDERS;SOURCES_IN;LINKS" ${ARGN})
+  rotbench_include_tree(${ARG_TREE} ${ARG_FOLDERS})
+  if(NOT ARG_SOURCES_IN)
+    set(ARG_SOURCES_IN ${ARG_FOLDERS})
+  endif()
+  set(sources)
+  foreach(folder IN LISTS ARG_SOURCES_IN)
+    file(GLOB found CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/${folder}/*.cpp)
+    list(APPEND sources ${found})
+  endforeach()
+  add_library(${target} OBJECT ${sources})
+  target_include_directories(${target} PUBLIC ${ROTBENCH_LAYERS_DIR}/${ARG_TREE})
+  target_link_libraries(${target} PUBLIC ${ARG_LINKS})
+endfunction()
+
+# Object files are linked only into targets that link their library directly (CMake's rule
+# for OBJECT libraries), and the self-registering schemes, scenes and verbs must all be in:
+# an executable links every layer it uses.
+set(ROTBENCH_ALL_LAYERS rotbench_cli rotbench_reports rotbench_harness rotbench_references rotbench_schemes)

@@ -1,0 +1,40 @@
+// `rotbench stability`: every selected scheme on every selected contact scene and damping
+// ratio; the measured limit, the eigenvalue limit and Peng et al.'s prediction.
+#pragma once
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace rotbench {
+
+struct StabilityRow {
+    std::string scene, scheme;
+    double zeta = 0;       // contact scenes
+    double omega_max = 0;  // fast_spin
+    double dt_empirical = 0, dt_amplification = 0, dt_peng = 0, dt_verlet_normal = 0;
+    bool unstable_at_every_dt = false;  // rho > 1 + 1e-6 already at dt_peng / 100
+};
+
+// The criterion: energy growth by 1e6 within 1000 periods of the fastest contact mode.
+inline constexpr double stability_horizon_periods = 1000.0;
+inline constexpr double stability_growth = 1e6;
+
+// Contact scenes run once per zeta, fast_spin once per omega_max; the eigenvalue limit is
+// NaN where the scene's state is not an equilibrium at rest.
+// InputError unless every id is a scene with a stability probe (the valid ones listed).
+void check_stability_scenes(const std::vector<std::string>& scenes);
+
+std::vector<StabilityRow> stability_study(const std::vector<std::string>& scenes, const std::vector<std::string>& schemes,
+                                          const std::vector<double>& zetas, const std::vector<double>& omegas, int jobs);
+
+// The spectral radius of each scheme's step map against dt, undamped, for each contact scene
+// among `scenes` that can be linearised at rest: 41 steps from 1/30 to 3 times Peng's prediction.
+struct SpectralCurve {
+    std::string scene, scheme;
+    double dt_peng = 0;
+    std::vector<std::pair<double, double>> points;  // (dt, rho)
+};
+std::vector<SpectralCurve> spectral_radius_curves(const std::vector<std::string>& scenes, const std::vector<std::string>& schemes);
+
+}  // namespace rotbench

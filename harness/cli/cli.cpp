@@ -1,0 +1,101 @@
+#include "harness/cli/cli.hpp"
+
+#include "harness/cli/verb.hpp"
+#include "harness/io/plugin.hpp"
+
+#include "build_info.hpp"
+
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <fmt/format.h>
+#include <map>
+#include <memory>
+
+namespace rotbench {
+namespace {
+
+// An option given with an empty value ("--scenes ''", often an unset shell variable) is bad
+// input, never a silent "the default".
+void refuse_empty_values(const CLI::App& app) {
+    for (const auto* option : app.get_options())
+        for (const auto& value : option->results())
+            if (value.empty()) throw InputError(option->get_name() + ": the value is empty; give one or leave the option out");
+    for (const auto* sub : app.get_subcommands()) refuse_empty_values(*sub);
+}
+
+std::string version_text() {
+    return fmt::format("rotbench {} (commit {})\ncompiler {}, {} build\nflags {}\n", build_info::version, build_info::commit,
+                       build_info::compiler, build_info::build_type, build_info::flags);
+}
+
+}  // namespace
+
+int run_cli_arguments(const std::vector<std::string>& arguments, std::ostream& out, std::ostream& err,
+                      const std::optional<std::filesystem::path>& resuming) {
+    std::vector<const char*> argv = {"rotbench"};
+    for (const auto& a : arguments) argv.push_back(a.c_str());
+    const int argc = static_cast<int>(argv.size());
+    CLI::App app{"rotbench: verification and convergence harness for rigid-body rotation schemes"};
+    app.fallthrough();  // --plugin may follow the command
+    app.require_subcommand(0, 1);
+    std::vector<std::string> plugins;
+    app.add_option("--plugin", plugins, "load schemes from a plug-in built with rotbench_add_scheme() (repeatable)");
+    bool version = false;
+    app.add_flag("--version", version, "print the version, commit, compiler and flags, and exit");
+    std::map<std::string, std::pair<CLI::App*, std::unique_ptr<Verb>>> verbs;
+    const auto names = VerbRegistry::instance().ids();
+    for (const auto& name : names) {
+        const auto& entry = VerbRegistry::instance().at(name, "command");
+        auto verb = entry.make();
+        CLI::App* command = app.add_subcommand(name, entry.summary);
+        verb->add_options(*command);
+        verbs.emplace(name, std::pair{command, std::move(verb)});
+    }
+
+    std::string command_line = "rotbench";
+    for (int i = 1; i < argc; ++i) command_line += std::string(" ") + argv[i];
+    try {
+        if (argc > 1 && argv[1][0] != '-' && !verbs.count(argv[1]))
+            throw InputError(std::string("unknown command '") + argv[1] + "'; valid commands: " + join(names, ", "));
+        app.parse(argc, argv.data());
+        if (version) {
+            out << version_text();
+            return 0;
+        }
+        refuse_empty_values(app);
+        const auto chosen = std::find_if(verbs.begin(), verbs.end(), [](const auto& v) { return v.second.first->parsed(); });
+        if (chosen == verbs.end()) throw InputError("no command given; valid commands: " + join(names, ", "));
+        Verb& verb = *chosen->second.second;
+        const auto load = [&] {
+            for (const auto& plugin : plugins) {
+                const auto ids = load_plugin(plugin);
+                err << "rotbench: loaded " << join(ids, ", ") << " from " << plugin << "\n";
+            }
+        };
+        const Invocation invocation{arguments, command_line, out, err, resuming, load};
+        if (!verb.defers_plugins()) load();
+        return verb.run(invocation);
+    } catch (const CLI::CallForHelp&) {
+        out << app.help();
+        return 0;
+    } catch (const CLI::ParseError& e) {
+        if (e.get_exit_code() == 0) {
+            out << app.help();
+            return 0;
+        }
+        err << "rotbench: " << e.what() << " (see rotbench --help)\n";
+        return 2;
+    } catch (const InputError& e) {
+        err << "rotbench: " << e.what() << "\n";
+        return 2;
+    } catch (const std::filesystem::filesystem_error& e) {  // an output path that is not a writable directory
+        err << "rotbench: " << e.what() << "\n";
+        return 2;
+    }
+}
+
+int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
+    return run_cli_arguments(std::vector<std::string>(argv + 1, argv + argc), out, err, std::nullopt);
+}
+
+}  // namespace rotbench

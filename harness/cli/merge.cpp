@@ -1,0 +1,32 @@
+// `rotbench merge DIR... --out OUT`: the outputs of the unsharded run from its N slices.
+#include "harness/cli/outputs.hpp"
+#include "harness/cli/verb.hpp"
+#include "harness/io/shard.hpp"
+
+namespace rotbench {
+namespace {
+
+class MergeVerb final : public Verb {
+public:
+    void add_options(CLI::App& command) override {
+        command.add_option("DIRS", dirs_, "the shard directories, one per K")->required();
+        command.add_option("--out", out_, "output directory")->required();
+        command.add_flag("--overwrite", overwrite_, "replace results already in --out");
+    }
+    int run(const Invocation& how) override {
+        const std::vector<std::filesystem::path> dirs(dirs_.begin(), dirs_.end());
+        const auto results = merge_shards(dirs);
+        write_outputs(prepare_output(out_, "results.csv", overwrite_), results, how.command_line, how.out);
+        return 0;
+    }
+
+private:
+    std::vector<std::string> dirs_;
+    std::string out_;
+    bool overwrite_ = false;
+};
+
+const RegisterVerb<MergeVerb> registration("merge", "combine the outputs of run --shard K/N into one run's outputs");
+
+}  // namespace
+}  // namespace rotbench

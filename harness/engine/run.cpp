@@ -1,0 +1,303 @@
+#include "harness/engine/run.hpp"
+
+#include "harness/engine/interrupt.hpp"
+#include "harness/engine/timing.hpp"
+#include "harness/engine/reference.hpp"
+#include "schemes/quaternion.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <exception>
+#include <fmt/format.h>
+#include <limits>
+
+namespace rotbench {
+namespace {
+
+constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+
+// Every scene's energy includes the rotational kinetic energy, into which every angular
+// velocity and orientation enters: a NaN or Inf in any of them makes the energy NaN or Inf
+// (tests/test_scenes.cpp checks this for every scene). So beside the energy, only the
+// positions and velocities need a test of their own (a scene without translation leaves
+// them out of its energy). x * 0 is 0 for a finite x and NaN otherwise: one test per body
+// instead of one per component.
+bool finite_translation(const Bodies& b) {
+    for (std::size_t i = 0; i < b.size(); ++i)
+        if ((0.0 * b.position[i]).sum() + (0.0 * b.velocity[i]).sum() != 0.0) return false;
+    return true;
+}
+
+// Accumulates the per-step errors and drifts of one run. Samples are the states after
+// each full step, t = dt, 2 dt, ..., N dt (the initial state is exact by construction).
+//
+// It runs at every one of the 2e8 steps of the default suite: with the scene's energy, about
+// 210 of the 865 instructions of a fibre_bounce step (callgrind, no_gyro). So it keeps, per
+// step, only the maxima of the raw quantities (|E - E0|, |q|^2, |L - L0|^2, |w - w_ref|^2)
+// and scales them, or takes their square roots, once at the end. Correctly rounded division
+// and sqrt are monotone, so the maximum of the scaled values is the scaled maximum, bit for
+// bit.
+class MetricsObserver {
+public:
+    MetricsObserver(const Scene& scene, const Reference* reference, const Bodies& initial, std::int64_t series_stride)
+        : scene_(scene),
+          reference_(reference),
+          series_stride_(series_stride),
+          conserves_energy_(scene.conserves_energy()),
+          gains_energy_(scene.gains_energy()),
+          energy0_(scene.energy(initial)),
+          energy_scale_(std::max(std::abs(energy0_), kinetic_energy(initial))),
+          runaway_limit_(blowup_energy_factor * energy_scale_),
+          tracks_energy_drift_(energy0_ != 0.0 && conserves_energy_),
+          momentum0_(total_angular_momentum(initial)),
+          tracks_momentum_drift_(scene.conserves_angular_momentum() && momentum0_.norm() > 0.0) {
+        if (series_stride_ > 0) {
+            series_columns_ = {"t", "energy_error"};
+            for (const auto& part : scene_.energy_parts(initial)) series_columns_.push_back(part.first);
+            record(0.0, initial);
+        }
+    }
+
+    bool operator()(std::int64_t n, double t, const Bodies& b) {
+        if (interrupt_signal()) return false;
+        const double energy = finite_translation(b) ? scene_.energy(b) : nan;
+        const double change = energy - energy0_;
+        const bool runaway = conserves_energy_ ? std::abs(change) > runaway_limit_ : !gains_energy_ && change > runaway_limit_;
+        if (!std::isfinite(energy) || runaway) {
+            fail_step_ = n;
+            fail_time_ = t;
+            return false;
+        }
+        if (tracks_energy_drift_) {
+            if (std::abs(change) > energy_change_max_) {  // the drift only changes with the maximum
+                energy_change_max_ = std::abs(change);
+                energy_drift_ = energy_change_max_ / std::abs(energy0_);
+            }
+            envelope_fit_.add(t, energy_drift_);
+        }
+        if (series_stride_ > 0 && --until_record_ == 0) {
+            record(t, b);
+            until_record_ = series_stride_;
+        }
+        if (tracks_momentum_drift_)
+            momentum_change_sq_max_ = std::max(momentum_change_sq_max_, (total_angular_momentum(b) - momentum0_).squaredNorm());
+        for (std::size_t i = 0; i < b.size(); ++i) {
+            const double norm_sq = b.orientation[i].squaredNorm();
+            quat_norm_sq_max_ = std::max(quat_norm_sq_max_, norm_sq);
+            quat_norm_sq_min_ = std::min(quat_norm_sq_min_, norm_sq);
+        }
+        if (reference_) compare_with_reference(n, t, b);
+        return true;
+    }
+
+    bool unstable() const { return fail_step_ != 0; }
+
+    void write(RunResult& r) const {
+        auto add = [&](const char* name, double v) { r.metrics.emplace_back(name, unstable() ? nan : v); };
+        if (reference_) {
+            const Vec3 rms = (squared_error_sum_ / static_cast<double>(std::max<std::int64_t>(samples_, 1))).cwiseSqrt();
+            add("omega_rms_x", rms.x());
+            add("omega_rms_y", rms.y());
+            add("omega_rms_z", rms.z());
+            add("omega_err_max", std::sqrt(omega_err_sq_max_));
+            add("orientation_err_max", orientation_err_max_);
+        }
+        if (tracks_energy_drift_) {
+            add("energy_drift_max", energy_drift_);
+            add("energy_drift_rate", envelope_fit_.slope());
+        }
+        if (scene_.conserves_angular_momentum())
+            add("momentum_drift_max", tracks_momentum_drift_ ? std::sqrt(momentum_change_sq_max_) / momentum0_.norm() : 0.0);
+        // |(|q| - 1)| is largest at the largest or the smallest |q|^2 (both start at 1: no error).
+        add("quat_norm_err_max", std::max(std::abs(std::sqrt(quat_norm_sq_max_) - 1.0), std::abs(std::sqrt(quat_norm_sq_min_) - 1.0)));
+        if (unstable()) {
+            r.metrics.emplace_back("fail_step", static_cast<double>(fail_step_));
+            r.metrics.emplace_back("fail_time", fail_time_);
+            r.failure = fmt::format("blew up at step {} (t = {:.6g} s)", fail_step_, fail_time_);
+        }
+        r.series_columns = series_columns_;
+        r.series = series_;
+    }
+
+private:
+    // Out of line, so that operator() stays small enough to be inlined into the run loop for
+    // the scenes without a per-step reference (the fibre: most of the suite's steps).
+    [[gnu::noinline]] void compare_with_reference(std::int64_t n, double t, const Bodies& b) {
+        for (std::size_t i = 0; i < b.size(); ++i) {
+            const ReferenceState ref = reference_->at(i, n, t);
+            const Quat q_unit = b.orientation[i].normalized();
+            const Vec3 error_body = to_body(q_unit, b.omega[i]) - to_body(ref.q, ref.omega);
+            squared_error_sum_ += error_body.cwiseAbs2();
+            ++samples_;
+            omega_err_sq_max_ = std::max(omega_err_sq_max_, (b.omega[i] - ref.omega).squaredNorm());
+            orientation_err_max_ = std::max(orientation_err_max_, rotation_angle_between(q_unit, ref.q));
+        }
+    }
+
+    void record(double t, const Bodies& b) {
+        std::vector<double> row = {t, energy0_ != 0.0 ? (scene_.energy(b) - energy0_) / std::abs(energy0_) : nan};
+        for (const auto& [name, value] : scene_.energy_parts(b)) row.push_back(value);
+        series_.push_back(std::move(row));
+    }
+
+    const Scene& scene_;
+    const Reference* reference_;
+    std::int64_t series_stride_;
+    std::int64_t until_record_ = series_stride_;  // steps to the next series sample (a countdown: no division per step)
+    // The scene's answers, asked once.
+    bool conserves_energy_, gains_energy_;
+    double energy0_, energy_scale_, runaway_limit_;
+    bool tracks_energy_drift_;
+    Vec3 momentum0_;
+    bool tracks_momentum_drift_;
+    // Least-squares line through the envelope max_{s<=t} |E(s) - E0|/|E0|: its slope is
+    // the secular drift rate (per second), apart from the bounded oscillation.
+    struct LineFit {
+        double n = 0, st = 0, sy = 0, stt = 0, sty = 0;
+        void add(double t, double y) { n += 1; st += t; sy += y; stt += t * t; sty += t * y; }
+        double slope() const { return n < 2 ? 0.0 : (n * sty - st * sy) / (n * stt - st * st); }
+    } envelope_fit_;
+    std::vector<std::string> series_columns_;
+    std::vector<std::vector<double>> series_;
+    Vec3 squared_error_sum_ = Vec3::Zero();
+    std::int64_t samples_ = 0;
+    double energy_change_max_ = 0, energy_drift_ = 0, momentum_change_sq_max_ = 0;
+    double quat_norm_sq_max_ = 1, quat_norm_sq_min_ = 1, omega_err_sq_max_ = 0, orientation_err_max_ = 0;
+    std::int64_t fail_step_ = 0;
+    double fail_time_ = 0;
+};
+
+// How a run is timed. A run of at most `whole` steps is timed whole. A longer one is timed
+// on a stratified sample: `segments` stretches of `whole / segments` steps, each starting at
+// a state the metrics run kept, evenly spaced over the run, with a freshly started scheme.
+// Every part of the trajectory (free flight and contact alike) is then timed in proportion,
+// so the per-step cost is that of the whole run, for 1e4 steps instead of all of them:
+// timing the 1e7-step fibre_bounce runs by a second full run was 40 % of the default suite.
+// Samples of 2e4 and of 1e5 steps gave the same ns_per_step (ratio over the 169 sampled runs
+// of fibre_bounce, cylinder_free and dipole_top: median 1.003, 5-95 % range 0.96-1.02, the
+// run-to-run noise), and the smaller sample saved 6.8 of the 52 CPU-s of those scenes. 1e4
+// against 2e4, two default suites each, alternated: ns_per_step ratio over the 805 runs
+// median 0.986 and 1.004, 5-95 % range 0.76-1.33 and 0.82-1.29, within the run-to-run noise
+// of that sitting (two runs at 2e4: 0.83-1.46); 1.2-1.8 CPU-s of the suite's 39-41 saved.
+// (A restarted scheme rebuilds its memory from the state: the same work, different round-off;
+// timing never uses the numbers.)
+class SampledTiming {
+public:
+    static constexpr std::int64_t whole = timing_sample_steps, segments = 32;
+
+    explicit SampledTiming(std::int64_t steps) : steps_(steps) {}
+    bool sampled() const { return steps_ > whole; }
+    std::int64_t segment_steps() const { return sampled() ? whole / segments : steps_; }
+    std::int64_t timed_steps() const { return sampled() ? segment_steps() * segments : steps_; }
+    // Segment k starts after step floor(k steps / segments), k = 0 ... segments - 1.
+    std::int64_t start(std::int64_t k) const { return k * steps_ / segments; }
+
+private:
+    std::int64_t steps_;
+};
+
+struct Checkpoint {
+    std::int64_t step;
+    Bodies bodies;
+};
+
+}  // namespace
+
+bool RunResult::has(const std::string& name) const {
+    return std::any_of(metrics.begin(), metrics.end(), [&](const auto& m) { return m.first == name; });
+}
+
+double RunResult::value(const std::string& name) const {
+    for (const auto& [n, v] : metrics)
+        if (n == name) return v;
+    return nan;
+}
+
+std::int64_t step_count(double t_end, double dt) {
+    if (!std::isfinite(dt) || dt <= 0.0) throw InputError(fmt::format("time step must be a positive number, got {}", dt));
+    if (!std::isfinite(t_end) || t_end <= 0.0)
+        throw InputError(fmt::format("t-end must be a positive number, got {}", t_end));
+    if (t_end < dt) throw InputError(fmt::format("t-end {} is shorter than the time step {}", t_end, dt));
+    const double ratio = t_end / dt;
+    const double nearest = std::round(ratio);
+    const double steps = std::abs(ratio - nearest) <= 1e-9 * ratio ? nearest : std::ceil(ratio);
+    if (steps > 1e12) throw InputError(fmt::format("t-end / dt = {:.3g} steps is too many", steps));
+    return static_cast<std::int64_t>(steps);
+}
+
+RunResult run_one(const RunSpec& requested, const RunOptions& options) {
+    const auto& scheme_entry = SchemeRegistry::instance().at(requested.scheme, "scheme");
+    ParamOverrides overrides = requested.params;
+    if (requested.t_end > 0.0) overrides.push_back({"t_end", {requested.t_end}});
+    const auto scene = make_scene(requested.scene, overrides);
+    RunResult result{requested, {}, {}};
+    result.spec.t_end = scene->t_end();
+    const double dt = result.spec.dt;
+    const std::int64_t steps = step_count(result.spec.t_end, dt);
+
+    std::int64_t force_evals = 0, done = 0;
+    bool unstable = false;
+    std::vector<Checkpoint> checkpoints;
+    try {
+        Bodies bodies = scene->initial_state();
+        auto scheme = scheme_entry.make();
+        const auto reference = make_reference(*scene, dt, steps);
+        const std::int64_t stride = options.series_samples > 0 && scene->reports_energy_series()
+                                        ? std::max<std::int64_t>(1, steps / options.series_samples)
+                                        : 0;
+        MetricsObserver observer(*scene, reference.get(), bodies, stride);
+        const SampledTiming sampling(steps);
+        if (sampling.sampled()) checkpoints.push_back({0, bodies});
+        // The step at which the next segment starts (none: never reached).
+        std::int64_t next_start = sampling.sampled() ? sampling.start(1) : -1;
+        done = simulate(*scene, *scheme, bodies, dt, steps, force_evals, [&](std::int64_t n, double t, const Bodies& b) {
+            if (n == next_start) {
+                checkpoints.push_back({n, b});
+                next_start = checkpoints.size() < SampledTiming::segments ? sampling.start(std::ssize(checkpoints)) : -1;
+            }
+            return observer(n, t, b);
+        });
+        observer.write(result);
+        unstable = observer.unstable();
+    } catch (const std::exception& e) {
+        result.failure = std::string("threw: ") + e.what();
+        unstable = true;
+    }
+
+    CpuTiming cpu{nan, nan, nan, 0};
+    std::int64_t timed_steps = 0;
+    if (!unstable && options.measure_time && !interrupt_signal()) {
+        // Timing run: the same loop without the observer, so the reference solution and
+        // the metrics are not charged to the scheme.
+        const SampledTiming sampling(steps);
+        timed_steps = sampling.timed_steps();
+        if (!sampling.sampled()) checkpoints = {{0, scene->initial_state()}};
+        cpu = median_cpu_seconds([&] {
+            for (const Checkpoint& start : checkpoints) {
+                Bodies bodies = start.bodies;
+                auto scheme = scheme_entry.make();
+                std::int64_t evals = 0;
+                simulate(*scene, *scheme, bodies, dt, sampling.segment_steps(), evals,
+                         [](std::int64_t, double, const Bodies&) { return !interrupt_signal(); }, start.step);
+            }
+        });  // warm: the metrics run has just made the same steps (harness/timing.hpp)
+        const double scale = static_cast<double>(steps) / static_cast<double>(timed_steps);
+        cpu = {cpu.median * scale, cpu.min * scale, cpu.max * scale, cpu.repeats};
+    }
+    if (interrupt_signal()) {  // the run or its timing was cut short: not a result
+        result.interrupted = true;
+        return result;
+    }
+    result.metrics.emplace_back("steps", static_cast<double>(done));
+    result.metrics.emplace_back("force_evals", static_cast<double>(force_evals));
+    result.metrics.emplace_back("cpu_seconds", cpu.median);
+    result.metrics.emplace_back("cpu_seconds_min", cpu.min);
+    result.metrics.emplace_back("cpu_seconds_max", cpu.max);
+    result.metrics.emplace_back("timing_repeats", cpu.repeats);
+    result.metrics.emplace_back("timed_steps", static_cast<double>(timed_steps));
+    result.metrics.emplace_back("ns_per_step", cpu.median / static_cast<double>(steps) * 1e9);
+    result.metrics.emplace_back("unstable", unstable ? 1.0 : 0.0);
+    return result;
+}
+
+}  // namespace rotbench

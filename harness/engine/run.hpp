@@ -1,0 +1,78 @@
+// One run: a scheme on a scene at one time step, and the metrics of DESIGN.md.
+#pragma once
+
+#include "harness/scenes/scene.hpp"
+#include "schemes/scheme.hpp"
+
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace rotbench {
+
+struct RunSpec {
+    std::string scene;
+    std::string scheme;
+    double dt = 0.0;
+    double t_end = 0.0;      // 0: the scene's default
+    ParamOverrides params;  // scene parameters other than t_end, as given by the user
+};
+
+struct RunResult {
+    RunSpec spec;
+    std::vector<std::pair<std::string, double>> metrics;  // names are the CSV contract
+    std::string failure;  // empty, or why the run stopped early
+    bool interrupted = false;  // SIGINT or SIGTERM stopped it: not a result
+    // Energy against time, when asked for: columns t, energy_error ((E - E0)/|E0|), then
+    // the scene's energy parts by name.
+    std::vector<std::string> series_columns;
+    std::vector<std::vector<double>> series;
+
+    bool has(const std::string& name) const;
+    double value(const std::string& name) const;  // NaN when absent
+};
+
+// A run of more steps than this is timed on a sample of its own trajectory of this many steps
+// (32 evenly spaced stretches, run.cpp); a shorter run is timed whole.
+inline constexpr std::int64_t timing_sample_steps = 10000;
+
+// Number of steps for a duration: t_end / dt rounded to the nearest integer when it is
+// one to within 1e-9 relative, otherwise rounded up, so a run never stops short of t_end.
+// Throws InputError when dt <= 0, t_end <= 0, either is not finite, or t_end < dt.
+std::int64_t step_count(double t_end, double dt);
+
+// Blow-up rule: a run is unstable when any state component is NaN or infinite, or when
+// its energy E departs from E0 by more than 1e6 times the initial energy scale (max of
+// |E0| and the initial kinetic energy): either way in a conservative scene, upwards in a
+// damped one. Energy that a scene's physics feeds in (an applied torque) is never taken
+// for a blow-up. The run stops at that step (fail_step, fail_time); its error metrics are NaN.
+inline constexpr double blowup_energy_factor = 1e6;
+
+// The metrics that time a run (cpu_seconds, cpu_seconds_min, cpu_seconds_max,
+// timing_repeats, ns_per_step): the only ones two runs of the same command may disagree on.
+inline bool is_timing_metric(const std::string& name) {
+    return name.rfind("cpu_seconds", 0) == 0 || name == "ns_per_step" || name == "timing_repeats";
+}
+
+struct RunOptions {
+    bool measure_time = true;  // off in tests: the timing run repeats the whole simulation
+    int series_samples = 0;    // > 0: record about this many energy samples (and t = 0),
+                               // in scenes that report an energy series
+};
+
+// Runs and measures; never throws for a failing scheme (the failure is recorded), but
+// throws InputError for unknown ids or bad numbers.
+RunResult run_one(const RunSpec& spec, const RunOptions& options = {});
+
+// The loop shared by the measured run and the timing run. The scheme cannot reach the
+// scene: the one force evaluation per step happens here, and here it is counted.
+// `bodies` is the state at step `first_step`; the loop makes `steps` steps from there and
+// returns the index of the last step made (the observer may stop it early).
+template <class Observer>
+std::int64_t simulate(const Scene& scene, RotationScheme& scheme, Bodies& bodies, double dt, std::int64_t steps,
+                      std::int64_t& force_evals, Observer&& observe, std::int64_t first_step = 0);
+
+}  // namespace rotbench
+
+#include "harness/engine/simulate.ipp"

@@ -1,0 +1,55 @@
+#include "harness/engine/sweep.hpp"
+
+#include "harness/engine/interrupt.hpp"
+#include "harness/engine/parallel.hpp"
+
+#include <algorithm>
+#include <mutex>
+
+namespace rotbench {
+
+std::vector<RunSpec> plan_sweep(const SweepSpec& spec) {
+    const auto& scenes = SceneRegistry::instance();
+    const auto& schemes = SchemeRegistry::instance();
+    const auto scene_ids = spec.scenes.empty() ? scenes.ids() : spec.scenes;
+    const auto scheme_ids = spec.schemes.empty() ? schemes.ids() : spec.schemes;
+    for (const auto& id : scheme_ids) schemes.at(id, "scheme");
+    for (const auto& [scene_id, overrides] : spec.params) {
+        scenes.at(scene_id, "scene");
+        if (std::find(scene_ids.begin(), scene_ids.end(), scene_id) == scene_ids.end())
+            throw InputError("parameters are set for scene '" + scene_id + "', which is not selected");
+    }
+
+    std::vector<RunSpec> plan;
+    for (const auto& scene_id : scene_ids) {
+        const auto found = spec.params.find(scene_id);
+        const ParamOverrides overrides = found == spec.params.end() ? ParamOverrides{} : found->second;
+        ParamOverrides with_t_end = overrides;
+        if (spec.t_end > 0.0) with_t_end.push_back({"t_end", {spec.t_end}});
+        const auto scene = make_scene(scene_id, with_t_end);  // validates every override
+        const double t_end = scene->t_end();
+        const auto dts = !spec.dts.empty() ? spec.dts : spec.quick ? scene->quick_dts() : scene->default_dts();
+        for (double dt : dts) step_count(t_end, dt);  // validates dt against t_end
+        for (const auto& scheme_id : scheme_ids)
+            for (double dt : dts) plan.push_back({scene_id, scheme_id, dt, t_end, overrides});
+    }
+    return plan;
+}
+
+std::vector<RunResult> run_sweep(const std::vector<RunSpec>& plan, const RunOptions& options,
+                                 const std::function<void(std::size_t, const RunResult&)>& on_done, int jobs) {
+    std::vector<RunResult> results(plan.size());
+    std::mutex done_mutex;
+    // run_one records a failing scheme; what it throws is bad input (none expected after
+    // plan_sweep), rethrown once every run has finished.
+    parallel_for(plan.size(), jobs, [&](std::size_t i) {
+        if (interrupt_signal()) return;
+        results[i] = run_one(plan[i], options);
+        if (results[i].interrupted) return;
+        std::lock_guard lock(done_mutex);
+        if (on_done) on_done(i, results[i]);
+    });
+    return results;
+}
+
+}  // namespace rotbench

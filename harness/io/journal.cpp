@@ -1,0 +1,141 @@
+#include "harness/io/journal.hpp"
+
+#include "harness/io/parse.hpp"
+#include "harness/io/series_csv.hpp"
+#include "harness/io/output_files.hpp"
+#include "harness/io/results_csv.hpp"
+
+#include <cerrno>
+#include <fcntl.h>
+#include <fmt/format.h>
+#include <sstream>
+#include <stdexcept>
+#include <unistd.h>
+
+namespace rotbench {
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path journal_dir(const fs::path& out_dir) { return out_dir / "partial"; }
+
+std::string read_text(const fs::path& path) {
+    auto text = read_file(path);
+    if (!text) throw InputError("cannot read " + path.string());
+    return std::move(*text);
+}
+
+std::string plan_line(const std::string& plan_id, std::size_t plan_size) { return fmt::format("{} {}\n", plan_id, plan_size); }
+
+// The records of the runs file that are whole, and the length they span: a kill while a
+// record was being appended leaves a cut one at the end, which is dropped (and cut off
+// the file when the run is resumed).
+struct Records {
+    std::map<std::size_t, RunResult> runs;
+    std::size_t whole_length = 0;
+};
+
+Records read_records(const fs::path& file) {
+    Records found;
+    const std::string text = read_file(file).value_or("");
+    std::size_t at = 0;
+    while (at < text.size()) {
+        const std::size_t line_end = text.find('\n', at);
+        if (line_end == std::string::npos) break;
+        std::istringstream header(text.substr(at, line_end - at));
+        std::string word;
+        std::size_t index = 0, lengths[3] = {0, 0, 0};
+        if (!(header >> word >> index >> lengths[0] >> lengths[1] >> lengths[2]) || word != "run") break;
+        const std::size_t body = line_end + 1;
+        const std::size_t end = body + lengths[0] + lengths[1] + lengths[2];
+        const std::string trailer = fmt::format("end {}\n", index);
+        if (end + trailer.size() > text.size() || text.compare(end, trailer.size(), trailer) != 0) break;
+        const std::string results = text.substr(body, lengths[0]), runs = text.substr(body + lengths[0], lengths[1]);
+        auto parsed = parse_results(results, runs, {}, file.string());
+        if (parsed.size() != 1) throw InputError(file.string() + ": a record that does not hold one run");
+        if (lengths[2] > 0)  // again, with the series under the name the run gives it
+            parsed = parse_results(results, runs,
+                                   {{series_file_name(parsed.front()), text.substr(body + lengths[0] + lengths[1], lengths[2])}},
+                                   file.string());
+        found.runs.insert_or_assign(index, std::move(parsed.front()));
+        at = end + trailer.size();
+        found.whole_length = at;
+    }
+    return found;
+}
+
+}  // namespace
+
+bool Journal::exists(const fs::path& out_dir) { return fs::exists(journal_dir(out_dir) / "plan"); }
+
+Journal Journal::start(const fs::path& out_dir, const std::vector<std::string>& arguments, const std::string& plan_id,
+                       std::size_t plan_size) {
+    std::string command;
+    for (const auto& a : arguments) {
+        if (a.find('\n') != std::string::npos) throw InputError("an argument holds a line break: '" + a + "'");
+        command += a + "\n";
+    }
+    const fs::path dir = journal_dir(out_dir);
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    write_file_atomically(dir / "command", command);
+    write_file_atomically(dir / "cwd", fs::current_path().string());
+    write_file_atomically(dir / "plan", plan_line(plan_id, plan_size));  // last: its presence marks a journal
+    return Journal(dir);
+}
+
+Journal Journal::reopen(const fs::path& out_dir, const std::string& plan_id, std::size_t plan_size) {
+    const fs::path dir = journal_dir(out_dir);
+    if (!exists(out_dir)) throw InputError("--resume " + out_dir.string() + ": no interrupted run there (no partial/plan)");
+    if (read_text(dir / "plan") != plan_line(plan_id, plan_size))
+        throw InputError("--resume " + out_dir.string() + ": the sweep its command describes is not the one that was " +
+                         "interrupted (a scheme, scene or plug-in changed); run it again with --overwrite");
+    // A record cut short by a kill would sit between the runs appended from now on: cut it off.
+    const fs::path runs = dir / "runs";
+    if (fs::exists(runs)) {
+        const std::size_t whole = read_records(runs).whole_length;
+        if (whole != fs::file_size(runs)) fs::resize_file(runs, whole);
+    }
+    return Journal(dir);
+}
+
+std::vector<std::string> Journal::arguments(const fs::path& out_dir) {
+    if (!exists(out_dir)) throw InputError("--resume " + out_dir.string() + ": no interrupted run there (no partial/plan)");
+    auto lines = split_on(read_text(journal_dir(out_dir) / "command"), '\n');
+    lines.pop_back();  // after the last line break
+    return lines;
+}
+
+fs::path Journal::working_directory(const fs::path& out_dir) {
+    const fs::path cwd = read_text(journal_dir(out_dir) / "cwd");
+    if (!fs::is_directory(cwd))
+        throw InputError("--resume " + out_dir.string() + ": the run was started in " + cwd.string() + ", which is gone");
+    return cwd;
+}
+
+std::map<std::size_t, RunResult> Journal::finished() const { return read_records(dir_ / "runs").runs; }
+
+void Journal::record(std::size_t plan_index, const RunResult& result) const {
+    const std::string results = results_csv({result}), runs = runs_csv({result});
+    const std::string series = result.series.empty() ? "" : series_csv(result);
+    const std::string record = fmt::format("run {} {} {} {}\n{}{}{}end {}\n", plan_index, results.size(), runs.size(),
+                                           series.size(), results, runs, series, plan_index);
+    // One write(2) in append mode per record: records of several threads do not interleave.
+    const int fd = ::open((dir_ / "runs").c_str(), O_WRONLY | O_APPEND | O_CREAT | O_CLOEXEC, 0644);
+    if (fd < 0) throw std::runtime_error("cannot open " + (dir_ / "runs").string());
+    std::size_t written = 0;
+    while (written < record.size()) {
+        const ssize_t n = ::write(fd, record.data() + written, record.size() - written);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) {
+            ::close(fd);
+            throw std::runtime_error("cannot write " + (dir_ / "runs").string());
+        }
+        written += static_cast<std::size_t>(n);
+    }
+    ::close(fd);
+}
+
+void Journal::remove() const { fs::remove_all(dir_); }
+
+}  // namespace rotbench

@@ -1,0 +1,41 @@
+#include "harness/io/plugin.hpp"
+
+#include "schemes/plugin_abi.hpp"
+
+#include <dlfcn.h>
+#include <filesystem>
+
+namespace rotbench {
+
+std::vector<std::string> load_plugin(const std::string& path) {
+    const std::string where = "--plugin " + path;
+    if (!std::filesystem::exists(path)) throw InputError(where + ": no such file");
+    // A path without '/' would make dlopen search the library path instead of this file.
+    const std::string file = path.find('/') == std::string::npos ? "./" + path : path;
+    void* handle = dlopen(file.c_str(), RTLD_NOW | RTLD_LOCAL);
+    if (!handle) throw InputError(where + ": cannot load: " + dlerror());
+    const auto abi = reinterpret_cast<rotbench_plugin_abi_fn>(dlsym(handle, "rotbench_plugin_abi"));
+    const auto schemes = reinterpret_cast<rotbench_plugin_schemes_fn>(dlsym(handle, "rotbench_plugin_schemes"));
+    if (!abi || !schemes) {
+        dlclose(handle);
+        throw InputError(where + ": not a rotbench plug-in (no rotbench_plugin_abi / rotbench_plugin_schemes); build it "
+                                 "with rotbench_add_scheme() from find_package(rotbench)");
+    }
+    if (std::string(abi()) != ROTBENCH_PLUGIN_ABI) {
+        const std::string theirs = abi();
+        dlclose(handle);
+        throw InputError(where + ": ABI mismatch: the plug-in was built for '" + theirs + "', this rotbench is '" +
+                         ROTBENCH_PLUGIN_ABI + "'; rebuild the plug-in against this rotbench");
+    }
+    const SchemeRegistry& theirs = *schemes();
+    const auto ids = theirs.ids();
+    if (ids.empty()) throw InputError(where + ": the plug-in registers no scheme");
+    auto& ours = SchemeRegistry::instance();
+    for (const auto& id : ids)
+        if (ours.contains(id))
+            throw InputError(where + ": scheme '" + id + "' is already registered; give the plug-in's scheme another id");
+    for (const auto& id : ids) ours.add(theirs.at(id, "scheme"));
+    return ids;  // the handle is kept open: the factories live in the library
+}
+
+}  // namespace rotbench

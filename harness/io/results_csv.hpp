@@ -1,0 +1,29 @@
+// results.csv: tidy long format, header exactly `scene,scheme,dt,metric,value`
+// (DESIGN.md "Output contract").
+#pragma once
+
+#include "harness/engine/run.hpp"
+
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace rotbench {
+
+std::string results_csv(const std::vector<RunResult>& results);
+
+// runs.csv: what results.csv does not hold, so that `rotbench report DIR` can re-render:
+// header scene,scheme,dt,t_end,params,failure; params as KEY=V1 V2 ...;KEY=... and the
+// failure text with commas replaced by semicolons.
+std::string runs_csv(const std::vector<RunResult>& results);
+
+// Reads results.csv and runs.csv (and the energy series under series/) back. InputError
+// when a file is missing or malformed.
+std::vector<RunResult> read_results(const std::filesystem::path& dir);
+// The same from the files' texts (a run journal keeps them so), `series` mapping a series
+// file's name to its text; `source` stands for the directory in error messages.
+std::vector<RunResult> parse_results(const std::string& results_text, const std::string& runs_text,
+                                     const std::map<std::string, std::string>& series, const std::string& source);
+
+}  // namespace rotbench

@@ -1,0 +1,105 @@
+// A scene: bodies, initial state, force/torque model, duration, observables and, where it
+// has one, a reference solution. A scene models only the physics it needs.
+#pragma once
+
+#include "harness/scenes/params.hpp"
+#include "references/dynamics.hpp"
+#include "schemes/bodies.hpp"
+#include "schemes/quaternion.hpp"
+#include "schemes/registry.hpp"
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace rotbench {
+
+// The bodies, their initial state and their force/torque model come from Dynamics
+// (references/dynamics.hpp), which the Odeint reference integrates.
+class Scene : public Dynamics {
+public:
+
+    // Declared by the scene's constructor (with `t_end` always), then overridden by the
+    // user, then `prepare` validates them (InputError naming the key) and builds what
+    // depends on them.
+    Params params;
+    virtual void prepare() {}
+
+    double t_end() const { return params.number("t_end"); }
+    // The default suite's time steps (a ladder by halving, plus any published ones) and
+    // the quick suite's (a few coarse rungs, for CI).
+    virtual std::vector<double> default_dts() const = 0;
+    virtual std::vector<double> quick_dts() const = 0;
+
+    // Where the reference solution comes from: a closed form (`exact`), or Boost.Odeint
+    // on this scene's own equations of motion (references/odeint_reference.hpp).
+    enum class ReferenceKind { none, closed_form, odeint };
+    virtual ReferenceKind reference_kind() const { return ReferenceKind::none; }
+    bool has_reference() const { return reference_kind() != ReferenceKind::none; }
+    virtual ReferenceState exact(std::size_t body, double t) const;
+    // An Odeint scene whose angular velocity alone has a closed form gives it here (body frame).
+    virtual std::optional<Vec3> exact_omega_body(std::size_t, double) const { return std::nullopt; }
+
+    // Total mechanical energy, and its parts by name (summing to it); the default is the
+    // kinetic energy, right for free bodies.
+    virtual double energy(const Bodies& bodies) const;
+    virtual std::vector<std::pair<std::string, double>> energy_parts(const Bodies& bodies) const;
+    // What the true motion conserves: the energy unless external work is done (then
+    // energy_drift_max would measure physics, not error), the angular momentum only
+    // without external torque.
+    virtual bool conserves_energy() const { return true; }
+    // External work feeds energy in (an applied torque): energy growth is then physics, and
+    // only a NaN or Inf state counts as a blow-up. A damped scene only loses energy.
+    virtual bool gains_energy() const { return false; }
+    // Scenes whose report shows the energy against time (the seed's Figures 8-11 for the
+    // fibre): every scene whose true motion conserves it.
+    bool reports_energy_series() const { return conserves_energy(); }
+    virtual bool conserves_angular_momentum() const { return false; }
+    // The torque seen in the body frame changes with the orientation (dipole_top): the
+    // class of scenes where reports/expected_orders.hpp's "with torque" orders apply.
+    virtual bool torque_depends_on_orientation() const { return false; }
+};
+
+using SceneRegistry = Registry<Scene>;
+
+template <class S>
+struct RegisterScene {
+    RegisterScene(std::string id, std::string summary, std::string source, std::string notes = "") {
+        SceneRegistry::instance().add({id, std::move(summary), std::move(source), std::move(notes), [id] {
+                                           auto scene = std::make_unique<S>();
+                                           scene->params.set_owner(id);
+                                           return scene;
+                                       }});
+    }
+};
+
+// The scene `id` with its parameters overridden and validated (InputError on bad input).
+std::unique_ptr<Scene> make_scene(const std::string& id, const ParamOverrides& overrides = {});
+
+// dt_max, dt_max/2, ..., rungs values in all, then `extra` (published steps) not already in.
+std::vector<double> halving_ladder(double dt_max, int rungs, std::vector<double> extra = {});
+
+// Inlined: a scene's energy() runs at every step of a run. Of body i, and of all bodies (a
+// scene of one body calls the former: the loops' set-up for vectorisation costs more than
+// the sum there).
+ROTBENCH_INLINE double translational_energy(const Bodies& b, std::size_t i) { return 0.5 * b.mass[i] * b.velocity[i].squaredNorm(); }
+ROTBENCH_INLINE double rotational_energy(const Bodies& b, std::size_t i) {
+    const Vec3 w_body = to_body(b.orientation[i], b.omega[i]);
+    return 0.5 * w_body.dot(b.inertia[i].cwiseProduct(w_body));
+}
+ROTBENCH_INLINE double translational_energy(const Bodies& b) {
+    double e = 0.0;
+    for (std::size_t i = 0; i < b.size(); ++i) e += translational_energy(b, i);
+    return e;
+}
+ROTBENCH_INLINE double rotational_energy(const Bodies& b) {
+    double e = 0.0;
+    for (std::size_t i = 0; i < b.size(); ++i) e += rotational_energy(b, i);
+    return e;
+}
+inline double kinetic_energy(const Bodies& b) { return translational_energy(b) + rotational_energy(b); }
+Vec3 total_angular_momentum(const Bodies& bodies);  // about the origin, world frame
+
+}  // namespace rotbench

@@ -1,0 +1,16 @@
+// What a scene of the stability study states about itself (harness/analysis/stability.hpp
+// measures the limits it is compared with).
+#pragma once
+
+namespace rotbench {
+
+class StabilityProbe {
+public:
+    virtual ~StabilityProbe() = default;
+    virtual double predicted_limit() const = 0;  // Peng et al.'s closed form for this scene
+    virtual double period() const = 0;           // of its fastest motion; the horizon counts these
+    // True where the initial state at rest is an equilibrium about which to linearise.
+    virtual bool linearisable_at_rest() const = 0;
+};
+
+}  // namespace rotbench
