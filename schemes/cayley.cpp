@@ -15,35 +15,40 @@
 namespace rotbench {
 namespace {
 
-Eigen::Matrix3d hat(const Vec3& v) {
-    Eigen::Matrix3d m;
-    m << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
+template <class S>
+Eigen::Matrix<S, 3, 3> hat(const Vec3T<S>& v) {
+    Eigen::Matrix<S, 3, 3> m;
+    m << S(0.0), -v.z(), v.y(), v.z(), S(0.0), -v.x(), -v.y(), v.x(), S(0.0);
     return m;
 }
 
 struct CayleyRotation {
-    static Quat rotate(const RigidBody& start, const Vec3& momentum, double dt) {
-        const Vec3& inertia = start.inertia;
-        const Vec3 p = to_body(start.q, momentum);
-        Vec3 xi = p.cwiseQuotient(inertia);
+    template <class S>
+    static QuatT<S> rotate(const RigidBodyT<S>& start, const Vec3T<S>& momentum, double dt) {
+        using Matrix3 = Eigen::Matrix<S, 3, 3>;
+        const Vec3T<S>& inertia = start.inertia;
+        const Vec3T<S> p = to_body(start.q, momentum);
+        Vec3T<S> xi = p.cwiseQuotient(inertia);
         constexpr int max_iterations = 50;
+        auto iterating = all_true<S>();  // in a pack each body stops at its own iteration, as alone
         for (int i = 0;; ++i) {
-            const Vec3 ixi = inertia.cwiseProduct(xi);
-            const double s = xi.dot(ixi);
-            const Vec3 residual = ixi + 0.5 * dt * xi.cross(ixi) + 0.25 * dt * dt * s * xi - p;
-            const Eigen::Matrix3d jacobian = Eigen::Matrix3d(inertia.asDiagonal()) +
-                                             0.5 * dt * (hat(xi) * inertia.asDiagonal() - hat(ixi)) +
-                                             0.25 * dt * dt * (s * Eigen::Matrix3d::Identity() + 2.0 * xi * ixi.transpose());
+            const Vec3T<S> ixi = inertia.cwiseProduct(xi);
+            const S s = xi.dot(ixi);
+            const Vec3T<S> residual = ixi + 0.5 * dt * xi.cross(ixi) + 0.25 * dt * dt * s * xi - p;
+            const Matrix3 jacobian = Matrix3(inertia.asDiagonal()) + 0.5 * dt * (hat(xi) * inertia.asDiagonal() - hat(ixi)) +
+                                     0.25 * dt * dt * (s * Matrix3::Identity() + 2.0 * xi * ixi.transpose());
             // The closed-form 3x3 inverse (cofactors): half the cost of a pivoted LU here.
             // The Jacobian is I + O(dt |xi|), far from singular wherever Newton converges.
-            const Vec3 delta = jacobian.inverse() * residual;
-            xi -= delta;
+            const Vec3T<S> delta = jacobian.inverse() * residual;
+            xi = select(iterating, Vec3T<S>(xi - delta), xi);
             // Newton converges quadratically: stop at a few units of round-off.
-            if (delta.norm() <= 1e-15 * xi.norm() || !std::isfinite(delta.norm())) break;
+            const S step = delta.norm();
+            iterating = iterating && !(step <= 1e-15 * xi.norm() || !is_finite(step));
+            if (!any_lane(iterating)) break;
             if (i == max_iterations)
                 throw std::runtime_error("cayley: Newton's method did not converge in 50 iterations (time step too large)");
         }
-        return start.q * cayley_rotation(dt * xi);
+        return start.q * cayley_rotation<S>(dt * xi);
     }
 };
 

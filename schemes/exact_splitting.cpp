@@ -17,6 +17,13 @@ struct ExactFreeRotation {
         const Vec3 omega_body = to_body(q, momentum).cwiseQuotient(start.inertia);
         return FreeRigidBody(start.inertia, q, omega_body).orientation(dt);
     }
+#if ROTBENCH_SIMD
+    // The closed form branches on each body's motion (steady, symmetric, which axis the momentum
+    // circulates about): a pack steps its bodies one by one.
+    static QuatT<Pack> rotate(const RigidBodyT<Pack>& start, const Vec3T<Pack>& momentum, double dt) {
+        return each_body(start, momentum, [dt](const RigidBody& b, const Vec3& l) { return rotate(b, l, dt); });
+    }
+#endif
 };
 
 const RegisterScheme<KickDriftKick<ExactFreeRotation>> registration(

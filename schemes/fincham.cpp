@@ -11,11 +11,12 @@ namespace rotbench {
 namespace {
 
 struct FinchamRotation {
-    static Quat rotate(const RigidBody& start, const Vec3& momentum, double dt) {
-        const Quat& q = start.q;
-        const Quat half(q.coeffs() + 0.5 * dt * quaternion_rate(q, start.omega));
-        const Vec3 omega_half = omega_from_momentum(half, start.inertia, momentum);
-        return Quat(q.coeffs() + dt * quaternion_rate(half, omega_half)).normalized();
+    template <class S>
+    static QuatT<S> rotate(const RigidBodyT<S>& start, const Vec3T<S>& momentum, double dt) {
+        const QuatT<S>& q = start.q;
+        const QuatT<S> half(q.coeffs() + 0.5 * dt * quaternion_rate(q, start.omega));
+        const Vec3T<S> omega_half = omega_from_momentum(half, start.inertia, momentum);
+        return normalized(QuatT<S>(q.coeffs() + dt * quaternion_rate(half, omega_half)));
     }
 };
 

@@ -14,33 +14,52 @@
 #include "schemes/scheme.hpp"
 
 #include <cmath>
+#include <concepts>
 #include <stdexcept>
 #include <string>
 
 namespace rotbench {
 
 // A Rotation policy is a type with
-//   static Quat rotate(const RigidBody& start, const Vec3& momentum, double dt);
+//   template <class S>
+//   static QuatT<S> rotate(const RigidBodyT<S>& start, const Vec3T<S>& momentum, double dt);
 // which returns q^{n+1} for the free rotation from start.q at the constant world angular
-// momentum `momentum` (= L^{n+1/2}); start also holds w^n and T^n.
+// momentum `momentum` (= L^{n+1/2}); start also holds w^n and T^n. Written as a template on
+// the scalar, the scheme steps packs of bodies (schemes/simd.hpp). A policy written for one
+// body only, `static Quat rotate(const RigidBody&, const Vec3&, double)`, works as well; its
+// scheme then steps one body at a time.
+#if ROTBENCH_SIMD
 template <class Rotation>
+concept RotatesPacks = requires(const RigidBodyT<Pack>& b, const Vec3T<Pack>& momentum, double dt) {
+    { Rotation::rotate(b, momentum, dt) } -> std::same_as<QuatT<Pack>>;
+};
+#else
+template <class Rotation>
+concept RotatesPacks = false;
+#endif
+
+template <class Rotation, class S = double>
 struct KickDriftKick {
+    template <class T>
+        requires RotatesPacks<Rotation>
+    using rebind = KickDriftKick<Rotation, T>;
+
     // L is the scheme's variable, kept from step to step: L^n after a step, L^{n+1/2} between
-    // predict and correct. w is derived from it for the force model (and for output), and
-    // taking L back from w at every step would cost two frame changes and add round-off.
+    // predict and correct. w is derived from it for the force model (and for output); taking
+    // L back from w at every step would cost two frame changes and add round-off.
     struct Memory {
-        Vec3 momentum;  // world
+        Vec3T<S> momentum;  // world
     };
 
-    static void start(const RigidBody& b, Memory& m) { m.momentum = momentum_from_omega(b.q, b.inertia, b.omega); }
+    static void start(const RigidBodyT<S>& b, Memory& m) { m.momentum = momentum_from_omega(b.q, b.inertia, b.omega); }
 
-    static void predict(RigidBody& b, Memory& m, double dt) {
+    static void predict(RigidBodyT<S>& b, Memory& m, double dt) {
         m.momentum += 0.5 * dt * b.torque;
         b.q = Rotation::rotate(b, m.momentum, dt);
         b.omega = omega_from_momentum(b.q, b.inertia, m.momentum);  // what the force model sees
     }
 
-    static void correct(RigidBody& b, Memory& m, double dt) {
+    static void correct(RigidBodyT<S>& b, Memory& m, double dt) {
         m.momentum += 0.5 * dt * b.torque;
         b.omega = omega_from_momentum(b.q, b.inertia, m.momentum);
     }
@@ -51,24 +70,51 @@ struct KickDriftKick {
 // where midpoint(w) gives the orientation at the middle of the step rotated with w. Fixed-
 // point iteration from the start-of-step value; it contracts by about dt |w| (I_max/I_min - 1)
 // per pass. A step so large that it does not converge is a failure of the scheme there: it
-// throws, and the harness records the run as failed.
-template <class Midpoint>
-Vec3 midpoint_angular_velocity(const RigidBody& start, const Vec3& momentum, Midpoint&& midpoint,
-                               const char* scheme) {
+// throws, and the harness records the run as failed. In a pack each body stops at its own
+// pass, so that it gets the bits it gets alone.
+template <class S, class Midpoint>
+Vec3T<S> midpoint_angular_velocity(const RigidBodyT<S>& start, const Vec3T<S>& momentum, Midpoint&& midpoint,
+                                   const char* scheme) {
     constexpr int max_iterations = 100;
-    Vec3 omega = omega_from_momentum(start.q, start.inertia, momentum);
-    double previous = INFINITY;
+    Vec3T<S> omega = omega_from_momentum(start.q, start.inertia, momentum);
+    S previous(INFINITY);
+    auto iterating = all_true<S>();
     for (int i = 0; i < max_iterations; ++i) {
-        const Vec3 next = omega_from_momentum(midpoint(omega), start.inertia, momentum);
-        const double change = (next - omega).norm(), scale = next.norm();
-        omega = next;
+        const Vec3T<S> next = omega_from_momentum(midpoint(omega), start.inertia, momentum);
+        const S change = (next - omega).norm(), scale = next.norm();
+        omega = select(iterating, next, omega);
         // Converged: within about four units of round-off of |w|, or, once below 1e-13 |w|,
         // no longer shrinking (the iteration then dithers between neighbouring doubles).
-        if (change <= 1e-15 * scale || (change <= 1e-13 * scale && change >= previous)) return omega;
-        previous = change;
+        const auto converged = change <= 1e-15 * scale || (change <= 1e-13 * scale && change >= previous);
+        previous = select(iterating, change, previous);
+        iterating = iterating && !converged;
+        if (!any_lane(iterating)) return omega;
     }
     throw std::runtime_error(std::string(scheme) + ": the mid-step angular velocity did not converge in " +
                              std::to_string(max_iterations) + " iterations (time step too large)");
 }
+
+#if ROTBENCH_SIMD
+// A rotation computed one body at a time by the policy's double code, for maths that a pack
+// cannot step together (exact_splitting's closed form branches on each body's motion).
+template <class OneBody>
+QuatT<Pack> each_body(const RigidBodyT<Pack>& start, const Vec3T<Pack>& momentum, OneBody&& rotate) {
+    constexpr int count = 16;
+    alignas(Pack::arch_type::alignment()) double in[count][Pack::size], out[4][Pack::size];
+    const Pack* fields[count] = {&start.inertia.x(), &start.inertia.y(), &start.inertia.z(), &start.q.w(),
+                                 &start.q.x(),       &start.q.y(),       &start.q.z(),       &start.omega.x(),
+                                 &start.omega.y(),   &start.omega.z(),   &start.torque.x(),  &start.torque.y(),
+                                 &start.torque.z(),  &momentum.x(),      &momentum.y(),      &momentum.z()};
+    for (int f = 0; f < count; ++f) fields[f]->store_aligned(in[f]);
+    for (std::size_t i = 0; i < Pack::size; ++i) {
+        const RigidBody body{Vec3(in[0][i], in[1][i], in[2][i]), Quat(in[3][i], in[4][i], in[5][i], in[6][i]),
+                             Vec3(in[7][i], in[8][i], in[9][i]), Vec3(in[10][i], in[11][i], in[12][i])};
+        const Quat q = rotate(body, Vec3(in[13][i], in[14][i], in[15][i]));
+        out[0][i] = q.w(), out[1][i] = q.x(), out[2][i] = q.y(), out[3][i] = q.z();
+    }
+    return QuatT<Pack>(Pack::load_aligned(out[0]), Pack::load_aligned(out[1]), Pack::load_aligned(out[2]),
+                       Pack::load_aligned(out[3]));
+}
+#endif
 
 }  // namespace rotbench

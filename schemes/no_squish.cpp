@@ -16,27 +16,31 @@ namespace rotbench {
 namespace {
 
 struct NoSquishRotation {
-    // The exact flow of H_k for a time t.
-    static void rotate_about_axis(int k, double t, Quat& q, Vec3& momentum_body, const Vec3& inertia) {
-        const double phi = t * momentum_body[k] / inertia[k];
-        const double c = std::cos(phi), s = std::sin(phi);
+    // The exact flow of H_k for a time t. A pack takes its sines and cosines lane by lane from
+    // libm, so that each body gets the bits it gets alone.
+    template <class S>
+    static void rotate_about_axis(int k, double t, QuatT<S>& q, Vec3T<S>& momentum_body, const Vec3T<S>& inertia) {
+        const S phi = t * momentum_body[k] / inertia[k];
+        const S c = each_lane(phi, [](double x) { return std::cos(x); }), s = each_lane(phi, [](double x) { return std::sin(x); });
         const int i = (k + 1) % 3, j = (k + 2) % 3;
-        const double li = momentum_body[i], lj = momentum_body[j];
+        const S li = momentum_body[i], lj = momentum_body[j];
         momentum_body[i] = c * li + s * lj;  // the fixed vector L seen from the turned body
         momentum_body[j] = -s * li + c * lj;
-        Vec3 half_angle = Vec3::Zero();
-        half_angle[k] = std::sin(0.5 * phi);
-        q = q * Quat(std::cos(0.5 * phi), half_angle.x(), half_angle.y(), half_angle.z());
+        Vec3T<S> half_angle = Vec3T<S>::Zero();
+        half_angle[k] = each_lane(S(0.5 * phi), [](double x) { return std::sin(x); });
+        q = q * QuatT<S>(each_lane(S(0.5 * phi), [](double x) { return std::cos(x); }), half_angle.x(), half_angle.y(),
+                         half_angle.z());
     }
 
-    static Quat rotate(const RigidBody& start, const Vec3& momentum, double dt) {
-        Quat q = start.q;
-        Vec3 l = to_body(q, momentum);
-        rotate_about_axis(2, 0.5 * dt, q, l, start.inertia);
-        rotate_about_axis(1, 0.5 * dt, q, l, start.inertia);
-        rotate_about_axis(0, dt, q, l, start.inertia);
-        rotate_about_axis(1, 0.5 * dt, q, l, start.inertia);
-        rotate_about_axis(2, 0.5 * dt, q, l, start.inertia);
+    template <class S>
+    static QuatT<S> rotate(const RigidBodyT<S>& start, const Vec3T<S>& momentum, double dt) {
+        QuatT<S> q = start.q;
+        Vec3T<S> l = to_body(q, momentum);
+        rotate_about_axis<S>(2, 0.5 * dt, q, l, start.inertia);
+        rotate_about_axis<S>(1, 0.5 * dt, q, l, start.inertia);
+        rotate_about_axis<S>(0, dt, q, l, start.inertia);
+        rotate_about_axis<S>(1, 0.5 * dt, q, l, start.inertia);
+        rotate_about_axis<S>(2, 0.5 * dt, q, l, start.inertia);
         return q;
     }
 };

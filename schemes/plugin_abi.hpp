@@ -7,9 +7,9 @@
 
 #include "schemes/scheme.hpp"  // brings in <string> and Eigen, whose macros are read below
 
-// Raise when anything in schemes/scheme.hpp, schemes/bodies.hpp or harness/registry.hpp
-// changes layout or meaning.
-#define ROTBENCH_PLUGIN_ABI_VERSION 1
+// Raise when anything in schemes/scheme.hpp, schemes/bodies.hpp or schemes/registry.hpp
+// changes layout or meaning. 2: RotationScheme::lanes().
+#define ROTBENCH_PLUGIN_ABI_VERSION 2
 
 #define ROTBENCH_ABI_STR2(x) #x
 #define ROTBENCH_ABI_STR(x) ROTBENCH_ABI_STR2(x)

@@ -85,8 +85,28 @@ ROTBENCH_INLINE QuatT<S> cayley_rotation(const Vec3Of<S>& x) {
 }
 
 // dq/dt = 1/2 w q for the world angular velocity w (seed eq. 15), as a 4-vector.
-inline Eigen::Vector4d quaternion_rate(const Quat& q, const Vec3& omega) {
-    return 0.5 * (Quat(0.0, omega.x(), omega.y(), omega.z()) * q).coeffs();
+template <class S>
+ROTBENCH_INLINE Eigen::Matrix<S, 4, 1> quaternion_rate(const QuatT<S>& q, const Vec3Of<S>& omega) {
+    return 0.5 * (QuatT<S>(S(0.0), omega.x(), omega.y(), omega.z()) * q).coeffs();
+}
+
+// Per lane: `if_true` where the condition holds, `if_false` elsewhere.
+template <class S, class Condition>
+ROTBENCH_INLINE QuatT<S> select(const Condition& condition, const QuatT<S>& if_true, const QuatT<S>& if_false) {
+    return QuatT<S>(select(condition, if_true.w(), if_false.w()), select(condition, if_true.x(), if_false.x()),
+                    select(condition, if_true.y(), if_false.y()), select(condition, if_true.z(), if_false.z()));
+}
+
+// q / |q|. For one body Eigen's normalized(), which does the same division; a pack has no
+// zero-norm branch (no scheme's q reaches zero).
+template <class S>
+ROTBENCH_INLINE QuatT<S> normalized(const QuatT<S>& q) {
+    if constexpr (std::is_same_v<S, double>) {
+        return q.normalized();
+    } else {
+        using std::sqrt;
+        return QuatT<S>(q.coeffs() / sqrt(q.squaredNorm()));
+    }
 }
 
 // Angular acceleration in the body frame from Euler's equations (seed eqs. 6, 34):

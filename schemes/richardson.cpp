@@ -11,18 +11,20 @@ namespace rotbench {
 namespace {
 
 // q + h (1/2 w q), normalised: one explicit Euler step of dq/dt = 1/2 w q.
-Quat euler_step(const Quat& q, const Vec3& omega, double h) {
-    return Quat(q.coeffs() + h * quaternion_rate(q, omega)).normalized();
+template <class S>
+QuatT<S> euler_step(const QuatT<S>& q, const Vec3T<S>& omega, double h) {
+    return normalized(QuatT<S>(q.coeffs() + h * quaternion_rate(q, omega)));
 }
 
 struct RichardsonRotation {
-    static Quat rotate(const RigidBody& start, const Vec3& momentum, double dt) {
-        const Quat& q = start.q;
-        const Vec3 omega = omega_from_momentum(q, start.inertia, momentum);
-        const Quat one_step = euler_step(q, omega, dt);
-        const Quat half = euler_step(q, omega, 0.5 * dt);
-        const Quat two_halves = euler_step(half, omega_from_momentum(half, start.inertia, momentum), 0.5 * dt);
-        return Quat(2.0 * two_halves.coeffs() - one_step.coeffs()).normalized();
+    template <class S>
+    static QuatT<S> rotate(const RigidBodyT<S>& start, const Vec3T<S>& momentum, double dt) {
+        const QuatT<S>& q = start.q;
+        const Vec3T<S> omega = omega_from_momentum(q, start.inertia, momentum);
+        const QuatT<S> one_step = euler_step(q, omega, dt);
+        const QuatT<S> half = euler_step(q, omega, 0.5 * dt);
+        const QuatT<S> two_halves = euler_step<S>(half, omega_from_momentum(half, start.inertia, momentum), 0.5 * dt);
+        return normalized(QuatT<S>(2.0 * two_halves.coeffs() - one_step.coeffs()));
     }
 };
 

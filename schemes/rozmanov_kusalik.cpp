@@ -13,10 +13,11 @@ namespace rotbench {
 namespace {
 
 struct RozmanovKusalikRotation {
-    static Quat rotate(const RigidBody& start, const Vec3& momentum, double dt) {
-        const Quat& q = start.q;
-        const auto midpoint = [&](const Vec3& w) { return rotation_increment(w, 0.5 * dt) * q; };
-        return rotation_increment(midpoint_angular_velocity(start, momentum, midpoint, "rozmanov_kusalik"), dt) * q;
+    template <class S>
+    static QuatT<S> rotate(const RigidBodyT<S>& start, const Vec3T<S>& momentum, double dt) {
+        const QuatT<S>& q = start.q;
+        const auto midpoint = [&](const Vec3T<S>& w) { return QuatT<S>(rotation_increment<S>(w, 0.5 * dt) * q); };
+        return rotation_increment<S>(midpoint_angular_velocity(start, momentum, midpoint, "rozmanov_kusalik"), dt) * q;
     }
 };
 

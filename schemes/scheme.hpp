@@ -9,9 +9,10 @@
 // Translation is Velocity Verlet for every scheme and is done by the harness.
 #pragma once
 
-#include "schemes/registry.hpp"
 #include "schemes/bodies.hpp"
+#include "schemes/registry.hpp"
 
+#include <cstddef>
 #include <memory>
 #include <string>
 #include <type_traits>
@@ -28,6 +29,8 @@ public:
     virtual void predict(Bodies& bodies, double dt) = 0;
     // torque holds T^{n+1}, evaluated at q^{n+1} and the angular velocity left by predict.
     virtual void correct(Bodies& bodies, double dt) = 0;
+    // How many bodies it steps at once: the width of its packs, or 1.
+    virtual std::size_t lanes() const { return 1; }
 };
 
 // What a scheme claims of itself; tests and the report check the claims against the runs.
@@ -87,6 +90,7 @@ public:
         memory_.resize(b.size() - packs * width);
         for (std::size_t i = packs * width; i < b.size(); ++i) Kernel::start(load<double>(b, i), memory_[i - packs * width]);
     }
+    std::size_t lanes() const override { return width; }
     void predict(Bodies& b, double dt) override { step(b, dt, [](auto& body, auto& m, double h, auto kernel) { decltype(kernel)::type::predict(body, m, h); }); }
     void correct(Bodies& b, double dt) override { step(b, dt, [](auto& body, auto& m, double h, auto kernel) { decltype(kernel)::type::correct(body, m, h); }); }
 

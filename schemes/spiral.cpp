@@ -12,27 +12,30 @@
 namespace rotbench {
 namespace {
 
+template <class S = double>
 struct Spiral {
+    template <class T>
+    using rebind = Spiral<T>;
     struct Memory {};
 
-    static void start(const RigidBody&, Memory&) {}
+    static void start(const RigidBodyT<S>&, Memory&) {}
 
-    static void predict(RigidBody& b, Memory&, double dt) {
-        const Vec3 omega = to_body(b.q, b.omega);
-        const Vec3 torque = to_body(b.q, b.torque);
-        const auto f = [&](const Vec3& w) { return euler_acceleration(w, torque, b.inertia); };
-        const Vec3 k1 = dt * f(omega);
+    static void predict(RigidBodyT<S>& b, Memory&, double dt) {
+        const Vec3T<S> omega = to_body(b.q, b.omega);
+        const Vec3T<S> torque = to_body(b.q, b.torque);
+        const auto f = [&](const Vec3T<S>& w) { return euler_acceleration(w, torque, b.inertia); };
+        const Vec3T<S> k1 = dt * f(omega);
         // exp(dt/2 w) is the rotation by dt |w|: half-angle convention of the paper.
-        b.q = b.q * rotation_from_vector(dt * omega) * rotation_from_vector(0.5 * dt * k1);
-        const Vec3 k2 = dt * f(omega + k1);
-        const Vec3 k3 = dt * f(omega + 0.25 * (k1 + k2));
+        b.q = b.q * rotation_from_vector<S>(dt * omega) * rotation_from_vector<S>(0.5 * dt * k1);
+        const Vec3T<S> k2 = dt * f(omega + k1);
+        const Vec3T<S> k3 = dt * f(omega + 0.25 * (k1 + k2));
         b.omega = to_world(b.q, omega + (k1 + k2 + 4.0 * k3) / 6.0);
     }
 
-    static void correct(RigidBody&, Memory&, double) {}
+    static void correct(RigidBodyT<S>&, Memory&, double) {}
 };
 
-const RegisterScheme<Spiral> registration(
+const RegisterScheme<Spiral<>> registration(
     "spiral", "SPIRAL: two exponential maps and SSPRK3 on Euler's equations (Yade's default)",
     "del Valle et al., Comput. Phys. Commun. 297:109077 (2024); synchronous form as in JaxDEM's Spiral",
     "q^{n+1} = q^n exp(dt/2 w'^n) exp(dt^2/4 dw'/dt) (half-angle exponentials, body frame), w' by SSPRK3; the "

@@ -105,13 +105,16 @@ TEST_CASE("rotation-dominant (fast_spin, eq. 57): the limits scale as 1/w_max, a
 }
 
 namespace {
+template <class S = double>
 struct ThrowsInPredict {  // test only: a scheme with a bug
+    template <class T>
+    using rebind = ThrowsInPredict<T>;
     struct Memory {};
-    static void start(const RigidBody&, Memory&) {}
-    static void predict(RigidBody&, Memory&, double) { throw std::runtime_error("scheme bug"); }
-    static void correct(RigidBody&, Memory&, double) {}
+    static void start(const RigidBodyT<S>&, Memory&) {}
+    static void predict(RigidBodyT<S>&, Memory&, double) { throw std::runtime_error("scheme bug"); }
+    static void correct(RigidBodyT<S>&, Memory&, double) {}
 };
-const RegisterScheme<ThrowsInPredict> throwing("test_stability_throws", "test only: throws", "tests", "", {.sound = false});
+const RegisterScheme<ThrowsInPredict<>> throwing("test_stability_throws", "test only: throws", "tests", "", {.sound = false});
 }  // namespace
 
 TEST_CASE("a scheme that throws is unstable at every dt in both analyses, and the study goes on") {

@@ -33,14 +33,17 @@ const Table1Comparison& entry(const std::vector<Table1Comparison>& rows, const s
 // of the dt = 1e-6 entry: below (theta^4/24 < eps) it uses (1 + theta^2/2, theta (1 -
 // theta^2/6)) normalised, where the cosine series is 1 - theta^2/2.
 struct PublishedSmallAngleIncrement {
-    static Quat map(const Vec3& omega, double dt) {
-        const Vec3 theta = 0.5 * dt * omega;
-        const double t = theta.norm();
-        if (t * t * t * t / 24.0 >= std::numeric_limits<double>::epsilon()) return rotation_increment(omega, dt);
-        const Vec3 v = (1.0 - t * t / 6.0) * theta;
-        return Quat(1.0 + t * t / 2.0, v.x(), v.y(), v.z()).normalized();
+    static constexpr bool steps_packs = true;
+    template <class S>
+    static QuatT<S> map(const Vec3T<S>& omega, double dt) {
+        const Vec3T<S> theta = 0.5 * dt * omega;
+        const S t = theta.norm();
+        const auto exact = t * t * t * t / 24.0 >= std::numeric_limits<double>::epsilon();
+        const Vec3T<S> v = (1.0 - t * t / 6.0) * theta;
+        return select(exact, rotation_increment<S>(omega, dt), normalized(QuatT<S>(1.0 + t * t / 2.0, v.x(), v.y(), v.z())));
     }
 };
+
 const RegisterScheme<MunjizaRk4<PublishedSmallAngleIncrement>> published_rk4(
     "test_munjiza_rk4_published_small_angle", "test only: munjiza_rk4 with the publication's small-angle q(w, dt)",
     "tests/test_table1.cpp", "", {.sound = false});
