@@ -137,7 +137,7 @@ TEST_CASE("bad input: config files that are malformed, have unknown keys or wron
             {config("a.toml", "[run\n"), "a.toml:1:"},
             {config("b.toml", "[run]\ndt = [1e-3,\n"), "b.toml:2:"},
             {config("c.toml", "[run]\nbogus = 1\n"), "c.toml:2:9: unknown key 'bogus' in [run]; valid keys: scenes, schemes, dt, t_end"},
-            {config("d.toml", "[nowhere]\nx = 1\n"), "d.toml:1:1: unknown table [nowhere]; valid tables: run, asymmetric_free"},
+            {config("d.toml", "[nowhere]\nx = 1\n"), "d.toml:1:1: unknown table [nowhere]; valid tables: run, " + valid(SceneRegistry::instance())},
             {config("e.toml", "[run]\nt_end = \"long\"\n"), "e.toml:2:9: 't_end' must be a number"},
             {config("f.toml", "[dipole_top]\nfield = \"up\"\n"), "f.toml:2:9: 'field' must be a number"},
             {config("g.toml", "[run]\ndt = [1e-3, 1e-3]\n"), "g.toml:2:6: 'dt': 0.001 is given twice"},
