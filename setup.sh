@@ -22,7 +22,7 @@ if ((${#missing[@]})); then
 fi
 
 build=${BUILD_DIR:-build}
-cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --preset release -B "$build" >/dev/null   # CMakePresets.json; BUILD_DIR moves the build
 cmake --build "$build" --parallel "$(nproc)"
 
 case "${1:-build}" in

@@ -87,10 +87,9 @@ const bool registered = [] {
 
 // The state's arrays (8 MB each at N = 1e6) come from the heap, not each from a mapping of its
 // own. glibc maps a large block at the same offset in its page every time; whether it mapped
-// or reused the heap varied between repetitions, and the batched times were bimodal (direct:
-// 26 ns per body-step with every array at the same page offset, 21-24 ns with staggered
-// ones; most likely the 20-odd arrays of a step then compete for the same cache sets).
-// From the heap the arrays lie at staggered offsets every time.
+// or reused the heap varied between repetitions, and the batched times were bimodal (with
+// every array at the same page offset the 20-odd arrays of a step most likely compete for
+// the same cache sets; docs/performance.md). From the heap they lie at staggered offsets.
 int main(int argc, char** argv) {
     mallopt(M_MMAP_THRESHOLD, 1 << 30);
     mallopt(M_TRIM_THRESHOLD, 1 << 30);

@@ -3,25 +3,13 @@
 #   ns_batched, ns_alone   Google Benchmark at N = 1e6 bodies (rotbench_bench): the batched
 #                          loops, and the same scheme one body at a time; the least of all
 #                          repetitions, with their spread ((max - min) / min). Times differ
-#                          between processes (their pages, or the minute they run in) more than
-#                          repetitions average out: 40 repetitions in each of 3 processes gave
-#                          no_gyro speed-ups of 3.42, 3.55 and 3.48, and with 2 processes of 5
-#                          to 7 repetitions two consecutive tables were 3.2 % (no_gyro's
-#                          speed-up) and 4.7 % (fincham's) apart. So each benchmark runs in
-#                          10 processes of 3 repetitions, in random interleaved order
-#                          (a slow spell of the shared machine then falls on all alike);
-#                          a scheme of more than 5000 instructions per body-step (an iteration
-#                          of 1e6 bodies takes seconds: exact_splitting) in 2 of 4 repetitions.
-#                          (Rounds of one repetition per process in a fixed order were tried:
-#                          each benchmark then met the same heap layout every time, and direct
-#                          a slow one.)
-#                          The least, not the median: the other tenants of a shared machine
-#                          only ever add time, most to the memory-bound batched loops, and
-#                          the least time is the one they disturbed least (BenchmarkTools.jl's
-#                          @btime reports it for the same reason). On two consecutive tables
-#                          the ratios from minima were 1.7 % apart on speed-ups and 3.5 % on
-#                          ns / direct, from medians 2.6 % and 3.5 %; odd against even
-#                          processes, minima 1.7-4.2 %, medians 3.0-10.1 %.
+#                          between processes more than repetitions average out, so each
+#                          benchmark runs in 10 processes of 3 repetitions, in random
+#                          interleaved order (a slow spell of the shared machine then falls on
+#                          all alike); a scheme of more than 5000 instructions per body-step in
+#                          2 of 4. The least, not the median: the other tenants of a shared
+#                          machine only ever add time. (What was tried and measured:
+#                          docs/performance.md.)
 #   instr_batched, instr_alone   callgrind instruction counts (benchmarks/instructions.sh):
 #                          N = 1000 bodies, and one body; deterministic, whatever the load;
 #   libm_instr_alone       of instr_alone, those inside libm (sin, cos, ...);

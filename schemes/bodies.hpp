@@ -1,5 +1,5 @@
 // The state of N rigid bodies, stored as a structure of arrays so that one scheme
-// kernel serves a one-body scene and a million-body batch alike (DESIGN.md "Core model").
+// kernel serves a one-body scene and a million-body batch alike.
 #pragma once
 
 #include "schemes/simd.hpp"

@@ -34,8 +34,7 @@ ROTBENCH_INLINE Vec3T<S> to_body(const QuatT<S>& q, const Vec3Of<S>& v_world) { 
 // terms after x^7 sum to less than h^16/16! < 8e-19, far below an ulp of either value
 // (both exceed 0.87 there). Summed by Estrin's scheme (pairs of terms, then pairs of pairs
 // with x^2 and x^4), whose dependent chain is three multiply-adds long where Horner's rule
-// is seven: the map lies on the critical path of every step, and fibre_bounce runs took
-// 4-10 % less time (direct, zvw, munjiza_rk4 at dt = 1e-7). The round-off is about an ulp:
+// is seven: the map lies on the critical path of every step. The round-off is about an ulp:
 // as accurate as sincos, with no call, no square root and no division. With x as an
 // argument they take doubles and packs alike, with the same operations in the same order,
 // so a body stepped in a pack gets the same bits as one stepped alone.
@@ -52,7 +51,6 @@ inline constexpr double sinc_coefficients[8] = {1.0,          -1.0 / 6,         
 // The rotation by the angle |theta| about theta: the exponential map, exp(theta/2) as a
 // quaternion (cos h, sin(h)/h theta/2) with h = |theta|/2. A step turns a body by far less
 // than a radian, so the series above serve it; sin and cos take over beyond |theta| = 1 rad.
-// (sincos, its square root and division were 9 % of the default suite's CPU time.)
 template <class S = double>
 ROTBENCH_INLINE QuatT<S> rotation_from_vector(const Vec3Of<S>& theta) {
     const S h2 = 0.25 * theta.squaredNorm();

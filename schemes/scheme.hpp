@@ -1,4 +1,4 @@
-// The rotation-scheme interface (DESIGN.md "Core model").
+// The rotation-scheme interface (docs/plugins.md).
 //
 // A DEM step has exactly one force/torque evaluation, so a scheme has two phases:
 //   predict: advance the orientation q^n -> q^{n+1} and set the angular velocity that the

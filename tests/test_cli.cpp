@@ -1,5 +1,6 @@
 #include "harness/io/parse.hpp"
 #include "harness/engine/run.hpp"
+#include "schemes/scheme.hpp"
 #include "tests/cli_helpers.hpp"
 
 #include <algorithm>
@@ -8,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <set>
 #include <sys/wait.h>
 
 using namespace rotbench;
@@ -134,4 +136,43 @@ TEST_CASE("run --shard K/N and merge give the outputs of the unsharded run, timi
     CHECK_THAT(too_many.err, Catch::Contains("the sweep has only 1 run(s), so at most 1 shard(s)"));
     CHECK_FALSE(fs::exists(dir / "bad"));
     fs::remove_all(dir);
+}
+
+namespace {
+// A scheme with an id longer than the list's default column, to keep the columns honest.
+template <class S = double>
+struct Idle {
+    template <class T>
+    using rebind = Idle<T>;
+    struct Memory {};
+    static void start(const RigidBodyT<S>&, Memory&) {}
+    static void predict(RigidBodyT<S>&, Memory&, double) {}
+    static void correct(RigidBodyT<S>&, Memory&, double) {}
+};
+const RegisterScheme<Idle<>> long_id("test_a_scheme_with_a_very_long_identifier", "test only: does nothing", "tests", "",
+                                     {.sound = false});
+}  // namespace
+
+TEST_CASE("rotbench list keeps its columns aligned whatever the length of the ids") {
+    const Cli r = cli({"list"});
+    REQUIRE(r.status == 0);
+    // Every entry is two lines, the summary and the source, both starting at one column.
+    std::istringstream in(r.out);
+    std::set<std::size_t> columns;
+    for (std::string line; std::getline(in, line);) {
+        if (line.rfind("  ", 0) != 0) continue;  // headings
+        const std::size_t id_end = line.find_first_not_of(' ', 2) == 2 ? line.find(' ', 2) : 2;
+        columns.insert(line.find_first_not_of(' ', id_end));
+    }
+    CHECK(columns.size() == 1);
+    CHECK(*columns.begin() == 2 + std::string("test_a_scheme_with_a_very_long_identifier").size() + 1);
+}
+
+TEST_CASE("rotbench --version names the version, the commit, the compiler and the flags") {
+    const Cli r = cli({"--version"});
+    CHECK(r.status == 0);
+    CHECK_THAT(r.out, Catch::StartsWith("rotbench 0."));
+    CHECK_THAT(r.out, Catch::Contains("(commit "));
+    CHECK_THAT(r.out, Catch::Contains("compiler GNU") || Catch::Contains("compiler Clang"));
+    CHECK_THAT(r.out, Catch::Contains("-ffp-contract=off"));
 }

@@ -67,7 +67,7 @@ TEST_CASE("the harness evaluates forces exactly once per step, plus once at t = 
     }
 }
 
-TEST_CASE("every run reports the metrics of DESIGN.md that apply to a torque-free scene with a reference") {
+TEST_CASE("every run reports the metrics of docs/outputs.md that apply to a torque-free scene with a reference") {
     const RunResult r = quick_run("direct", 1e-3);
     for (const char* m : {"omega_rms_x", "omega_rms_y", "omega_rms_z", "omega_err_max", "orientation_err_max",
                           "energy_drift_max", "momentum_drift_max", "quat_norm_err_max", "steps", "force_evals",

@@ -24,7 +24,7 @@ namespace {
 struct RunOptionsText {
     std::string scenes, schemes, dts, t_end, config, shard, resume, out = "rotbench-out";
     std::vector<std::string> settings;
-    int energy_series = 400;
+    int energy_series = 200;
     int jobs = core_count();
     bool overwrite = false, quick = false;
 };

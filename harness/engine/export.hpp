@@ -1,4 +1,4 @@
-// Trajectory exports (DESIGN.md "CLI verbs"), one body, columns
+// Trajectory exports (docs/cli.md), one body, columns
 //   t,qw,qx,qy,qz,wx,wy,wz,wbx,wby,wbz,x,y,z,vx,vy,vz,energy
 // (w: world angular velocity, wb: body frame).
 #pragma once

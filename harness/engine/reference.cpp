@@ -10,8 +10,8 @@ namespace rotbench {
 namespace {
 
 // The closed form evaluated at every step t_k = k dt, once for all the schemes of a sweep
-// (references/shared_trajectory.hpp): elliptic integrals at every step were about 40 % of a
-// cylinder_free run, the same values for every scheme.
+// (harness/engine/shared_trajectory.hpp): the same values for every scheme, and elliptic
+// integrals are dear.
 class ClosedFormReference final : public Reference {
 public:
     ClosedFormReference(const Scene& scene, double dt, std::int64_t steps) {

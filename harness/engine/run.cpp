@@ -31,9 +31,8 @@ bool finite_translation(const Bodies& b) {
 // Accumulates the per-step errors and drifts of one run. Samples are the states after
 // each full step, t = dt, 2 dt, ..., N dt (the initial state is exact by construction).
 //
-// It runs at every one of the 2e8 steps of the default suite: with the scene's energy, about
-// 210 of the 865 instructions of a fibre_bounce step (callgrind, no_gyro). So it keeps, per
-// step, only the maxima of the raw quantities (|E - E0|, |q|^2, |L - L0|^2, |w - w_ref|^2)
+// It runs at every step of every run, a good share of a cheap step (docs/performance.md). So
+// it keeps, per step, only the maxima of the raw quantities (|E - E0|, |q|^2, |L - L0|^2, |w - w_ref|^2)
 // and scales them, or takes their square roots, once at the end. Correctly rounded division
 // and sqrt are monotone, so the maximum of the scaled values is the scaled maximum, bit for
 // bit.
@@ -171,14 +170,9 @@ private:
 // on a stratified sample: `segments` stretches of `whole / segments` steps, each starting at
 // a state the metrics run kept, evenly spaced over the run, with a freshly started scheme.
 // Every part of the trajectory (free flight and contact alike) is then timed in proportion,
-// so the per-step cost is that of the whole run, for 1e4 steps instead of all of them:
-// timing the 1e7-step fibre_bounce runs by a second full run was 40 % of the default suite.
-// Samples of 2e4 and of 1e5 steps gave the same ns_per_step (ratio over the 169 sampled runs
-// of fibre_bounce, cylinder_free and dipole_top: median 1.003, 5-95 % range 0.96-1.02, the
-// run-to-run noise), and the smaller sample saved 6.8 of the 52 CPU-s of those scenes. 1e4
-// against 2e4, two default suites each, alternated: ns_per_step ratio over the 805 runs
-// median 0.986 and 1.004, 5-95 % range 0.76-1.33 and 0.82-1.29, within the run-to-run noise
-// of that sitting (two runs at 2e4: 0.83-1.46); 1.2-1.8 CPU-s of the suite's 39-41 saved.
+// so the per-step cost is that of the whole run, for 1e4 steps instead of all of them (a
+// second full run of the long ones was a large share of the default suite; larger samples
+// gave the same ns_per_step within the run-to-run noise: docs/performance.md).
 // (A restarted scheme rebuilds its memory from the state: the same work, different round-off;
 // timing never uses the numbers.)
 class SampledTiming {

@@ -1,4 +1,4 @@
-// One run: a scheme on a scene at one time step, and the metrics of DESIGN.md.
+// One run: a scheme on a scene at one time step, and its metrics (docs/outputs.md).
 #pragma once
 
 #include "harness/scenes/scene.hpp"

@@ -21,13 +21,8 @@ struct CpuTiming {
 // Median CPU time of `work`; repeats at least `min_repeats` times and until `min_total`
 // seconds were measured (at most 31 repeats). No call is discarded as a warm-up: the caller
 // times a run right after its metrics run, which has already stepped the same scheme on the
-// same scene (caches, branch predictors and pages are warm). Without a warm-up call the
-// default suite's ns_per_step had median ratio 1.000 to with one (805 runs; 5-95 % range
-// 0.93-1.05, as two runs of the same setting: 0.96-1.07), and the suite took 2 CPU-s less.
-// 3 ms and 10 ms gave the same ns_per_step (ratio over the 655 short runs of the default
-// suite whose timing this floor sets: median 1.00, 5-95 % range 0.98-1.05); 10 ms cost
-// 2.5 CPU-s more, 50 ms 30. 1 ms saved only 0.2 CPU-s more: most runs need 3 repeats anyway.
-// A call that takes longer than `long_call` seconds is measured once: its start-up costs are
+// same scene (caches, branch predictors and pages are warm); a warm-up call and a longer
+// floor did not change ns_per_step beyond the run-to-run noise (docs/performance.md). A call that takes longer than `long_call` seconds is measured once: its start-up costs are
 // amortised, and repeating it would only spend time.
 template <class Work>
 CpuTiming median_cpu_seconds(Work&& work, int min_repeats = 3, double min_total = 0.003, double long_call = 0.5) {

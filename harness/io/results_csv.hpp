@@ -1,5 +1,5 @@
 // results.csv: tidy long format, header exactly `scene,scheme,dt,metric,value`
-// (DESIGN.md "Output contract").
+// (docs/outputs.md).
 #pragma once
 
 #include "harness/engine/run.hpp"

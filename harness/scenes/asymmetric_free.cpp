@@ -21,7 +21,7 @@ public:
     }
     void prepare() override {
         // HLW's moments violate the triangle inequality (2 > 1 + 2/3): a test of Euler's
-        // equations, not a body that exists. This scene keeps them, as DESIGN.md asks.
+        // equations, not a body that exists. This scene keeps them: they are the published test.
         const Vec3 inertia = params.principal_moments("inertia", /*real_body=*/false);
         set_motion(inertia, params.quat("q0"), params.vec3("momentum0").cwiseQuotient(inertia));
     }

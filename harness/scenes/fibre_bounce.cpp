@@ -1,5 +1,5 @@
 // `fibre_bounce`: seed 000, test case 2 (Zhao & van Wachem's fibre) with the geometry of
-// the CIMNE reproduction (DESIGN.md): five spheres of radius 0.5 at body x = -1 ... 1 (step
+// the CIMNE reproduction (the seed omits it): five spheres of radius 0.5 at body x = -1 ... 1 (step
 // 0.5), all scaled by 0.012516777 m; mass 2.15710e-3 kg; principal moments 4.01318e-8
 // (axial, body x) and 2.21899e-7 kg m^2; Hertz normal contact of each sphere with the
 // floor z = 0 (fibre E = 5e7 Pa, nu = 0.35; floor E = 5e7 Pa, nu = 0.23), no friction, no
@@ -61,7 +61,7 @@ public:
     std::vector<double> quick_dts() const override { return halving_ladder(1e-5, 3); }
 
     // The spheres lie on the body x axis, so one rotation of that axis places all five:
-    // this runs at every step of 2e8, and five quaternion rotations were a third of it.
+    // this runs at every step, and five quaternion rotations would be most of it.
     void evaluate_forces(Bodies& b, double) const override {
         const Vec3 axis = fibre_axis(b);
         const double centre_z = b.position[0].z();

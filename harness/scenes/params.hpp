@@ -1,5 +1,5 @@
 // Scene parameters: named numbers and vectors with units, declared by each scene,
-// overridden by `--set SCENE.KEY=VALUE` or a TOML config (DESIGN.md "Scene parameters").
+// overridden by `--set SCENE.KEY=VALUE` or a TOML config (docs/ids.md lists every key).
 #pragma once
 
 #include "schemes/registry.hpp"

@@ -55,9 +55,8 @@ FreeRigidBody::FreeRigidBody(const Vec3& inertia, const Quat& q0, const Vec3& om
     // A symmetric top, two equal moments A and the third, C, about body axis k: L is fixed in
     // space and its component L_k in the body, so w = L/A + (1/C - 1/A) L_k e_k is a constant
     // rate fixed in space plus one fixed in the body, and q(t) = exp(t L/A) q0 exp(t (1/C -
-    // 1/A) L_k e_k) (Landau & Lifshitz sec. 33). No elliptic functions: the general form below
-    // took 3e9 instructions (GSL's Carlson integrals, atan2) to tabulate cylinder_free's 13
-    // references.
+    // 1/A) L_k e_k) (Landau & Lifshitz sec. 33). No elliptic functions, which the general form
+    // below spends most of its time in.
     for (int k = 0; k < 3; ++k) {
         const double a = inertia[(k + 1) % 3], c = inertia[k];
         if (a != inertia[(k + 2) % 3]) continue;
