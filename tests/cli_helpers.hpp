@@ -2,6 +2,7 @@
 #pragma once
 
 #include "harness/cli/cli.hpp"
+#include "harness/io/csv.hpp"
 #include "harness/io/parse.hpp"
 #include "harness/engine/run.hpp"
 
@@ -42,13 +43,19 @@ inline std::string read(const fs::path& p) {
     return {std::istreambuf_iterator<char>(in), {}};
 }
 
-// A CSV without the rows that hold a timing metric: what two runs of one command share.
+// A CSV without what times a run: the rows of a timing metric (results.csv), the column of
+// timing repeats (runs.csv). What two runs of one command share.
 inline std::string without_timing(const std::string& csv) {
-    std::istringstream in(csv);
-    std::string line, out;
-    while (std::getline(in, line)) {
-        const auto fields = split_commas(line);
-        if (std::none_of(fields.begin(), fields.end(), is_timing_metric)) out += line + "\n";
+    const auto records = parse_csv(csv, "csv");
+    if (records.empty()) return "";
+    const auto& header = records.front().fields;
+    const auto timing_column = std::find(header.begin(), header.end(), "timing") - header.begin();
+    std::string out;
+    for (const auto& r : records) {
+        auto fields = r.fields;
+        if (std::any_of(fields.begin(), fields.end(), is_timing_metric)) continue;
+        if (timing_column < static_cast<std::ptrdiff_t>(fields.size()) && &r != &records.front()) fields[timing_column].clear();
+        out += csv_record(fields);
     }
     return out;
 }

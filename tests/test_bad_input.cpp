@@ -163,7 +163,7 @@ TEST_CASE("bad input: missing or unreadable input files and directories") {
             {{"gate", (dir / "absent.toml").string()}, "absent.toml: cannot read the file"},
             {{"gate", dir.string()}, "cannot read the file"},
             {{"report", (dir / "absent").string()}, "cannot read " + (dir / "absent" / "runs.csv").string()},
-            {{"report", (dir / "not_results").string()}, "runs.csv:1: expected the header 'scene,scheme,dt,t_end,params,failure'"},
+            {{"report", (dir / "not_results").string()}, "runs.csv:1: expected the header 'scene,scheme,kind,dt,t_end,params,metrics,timing,failure'"},
             {{"merge", (dir / "absent").string(), "--out", out}, "cannot read " + (dir / "absent" / "shard.csv").string()},
             {{"list", "--plugin", (dir / "absent.so").string()}, "no such file"},
         },

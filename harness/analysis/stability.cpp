@@ -1,5 +1,6 @@
 #include "harness/analysis/stability.hpp"
 
+#include "harness/engine/interrupt.hpp"
 #include "harness/engine/run.hpp"
 #include "schemes/quaternion.hpp"
 
@@ -57,7 +58,7 @@ bool unstable_at(const Scene& scene, const std::string& scheme_id, double dt, co
         simulate(scene, *scheme, b, dt, steps, evals, [&](std::int64_t, double, const Bodies& s) {
             const double e = scene.energy(s);
             blew_up = !std::isfinite(e) || e > c.growth * e0;
-            return !blew_up;
+            return !blew_up && !interrupt_signal();  // a signal ends the search (the caller drops it)
         });
     } catch (const std::exception&) {
         return true;  // a scheme that throws has failed at this dt

@@ -3,6 +3,7 @@
 #include "harness/engine/interrupt.hpp"
 #include "harness/engine/timing.hpp"
 #include "harness/engine/reference.hpp"
+#include "harness/engine/run_kinds.hpp"
 #include "schemes/quaternion.hpp"
 
 #include <algorithm>
@@ -219,7 +220,31 @@ std::int64_t step_count(double t_end, double dt) {
     return static_cast<std::int64_t>(steps);
 }
 
+const char* kind_name(RunKind kind) {
+    switch (kind) {
+        case RunKind::trajectory: return "trajectory";
+        case RunKind::reversal: return "reversal";
+        case RunKind::stability: return "stability";
+    }
+    return "?";
+}
+
+RunKind kind_from_name(const std::string& name) {
+    for (RunKind k : {RunKind::trajectory, RunKind::reversal, RunKind::stability})
+        if (name == kind_name(k)) return k;
+    throw InputError("unknown run kind '" + name + "'; valid kinds: trajectory, reversal, stability");
+}
+
 RunResult run_one(const RunSpec& requested, const RunOptions& options) {
+    switch (requested.kind) {
+        case RunKind::reversal: return run_reversal(requested);
+        case RunKind::stability: return run_stability_search(requested);
+        case RunKind::trajectory: break;
+    }
+    return run_trajectory(requested, options);
+}
+
+RunResult run_trajectory(const RunSpec& requested, const RunOptions& options) {
     const auto& scheme_entry = SchemeRegistry::instance().at(requested.scheme, "scheme");
     ParamOverrides overrides = requested.params;
     if (requested.t_end > 0.0) overrides.push_back({"t_end", {requested.t_end}});
@@ -258,7 +283,7 @@ RunResult run_one(const RunSpec& requested, const RunOptions& options) {
         unstable = true;
     }
 
-    CpuTiming cpu{nan, nan, nan, 0};
+    CpuTiming cpu{nan, nan, nan, 0, {}};
     std::int64_t timed_steps = 0;
     if (!unstable && options.measure_time && !interrupt_signal()) {
         // Timing run: the same loop without the observer, so the reference solution and
@@ -276,7 +301,9 @@ RunResult run_one(const RunSpec& requested, const RunOptions& options) {
             }
         });  // warm: the metrics run has just made the same steps (harness/timing.hpp)
         const double scale = static_cast<double>(steps) / static_cast<double>(timed_steps);
-        cpu = {cpu.median * scale, cpu.min * scale, cpu.max * scale, cpu.repeats};
+        for (double& sample : cpu.samples) sample *= scale;
+        cpu = {cpu.median * scale, cpu.min * scale, cpu.max * scale, cpu.repeats, cpu.samples};
+        result.timing_samples = cpu.samples;
     }
     if (interrupt_signal()) {  // the run or its timing was cut short: not a result
         result.interrupted = true;

@@ -11,12 +11,22 @@
 
 namespace rotbench {
 
+// What a run measures (docs/outputs.md):
+//   trajectory  the scheme steps the scene from t = 0 to t_end: errors, drifts, cost;
+//   reversal    it steps forward to t_end and then back with -dt: how far from the
+//               initial state it returns (time reversibility);
+//   stability   the largest dt at which it stays stable on a stability scene (dt unused).
+enum class RunKind { trajectory, reversal, stability };
+const char* kind_name(RunKind kind);
+RunKind kind_from_name(const std::string& name);  // InputError for an unknown one
+
 struct RunSpec {
     std::string scene;
     std::string scheme;
     double dt = 0.0;
     double t_end = 0.0;      // 0: the scene's default
     ParamOverrides params;  // scene parameters other than t_end, as given by the user
+    RunKind kind = RunKind::trajectory;
 };
 
 struct RunResult {
@@ -28,6 +38,9 @@ struct RunResult {
     // the scene's energy parts by name.
     std::vector<std::string> series_columns;
     std::vector<std::vector<double>> series;
+    // The CPU time of each timing repeat, scaled to the whole run as cpu_seconds is: the
+    // samples `rotbench compare` tests a cost change against.
+    std::vector<double> timing_samples;
 
     bool has(const std::string& name) const;
     double value(const std::string& name) const;  // NaN when absent

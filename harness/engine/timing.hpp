@@ -16,6 +16,7 @@ inline double thread_cpu_seconds() {
 struct CpuTiming {
     double median = 0, min = 0, max = 0;
     int repeats = 0;
+    std::vector<double> samples;  // every repeat, in the order measured
 };
 
 // Median CPU time of `work`; repeats at least `min_repeats` times and until `min_total`
@@ -35,8 +36,9 @@ CpuTiming median_cpu_seconds(Work&& work, int min_repeats = 3, double min_total 
         total += samples.back();
         if (samples.size() == 1 && samples.front() > long_call) break;
     }
-    std::sort(samples.begin(), samples.end());
-    return {samples[samples.size() / 2], samples.front(), samples.back(), static_cast<int>(samples.size())};
+    std::vector<double> sorted = samples;
+    std::sort(sorted.begin(), sorted.end());
+    return {sorted[sorted.size() / 2], sorted.front(), sorted.back(), static_cast<int>(sorted.size()), samples};
 }
 
 }  // namespace rotbench

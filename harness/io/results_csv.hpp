@@ -14,8 +14,10 @@ namespace rotbench {
 std::string results_csv(const std::vector<RunResult>& results);
 
 // runs.csv: what results.csv does not hold, so that `rotbench report DIR` can re-render:
-// header scene,scheme,dt,t_end,params,failure; params as KEY=V1 V2 ...;KEY=... and the
-// failure text with commas replaced by semicolons.
+// header scene,scheme,kind,dt,t_end,params,metrics,timing,failure; params as
+// KEY=V1 V2 ...;KEY=..., metrics the number of the run's rows in results.csv (whose rows
+// follow the runs' order), timing the CPU seconds of each timing repeat. RFC 4180 quoting
+// (harness/io/csv.hpp).
 std::string runs_csv(const std::vector<RunResult>& results);
 
 // Reads results.csv and runs.csv (and the energy series under series/) back. InputError

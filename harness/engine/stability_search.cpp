@@ -1,0 +1,29 @@
+#include "harness/analysis/stability.hpp"
+#include "harness/analysis/stability_study.hpp"
+#include "harness/engine/interrupt.hpp"
+#include "harness/engine/run_kinds.hpp"
+
+namespace rotbench {
+
+RunResult run_stability_search(const RunSpec& requested) {
+    SchemeRegistry::instance().at(requested.scheme, "scheme");
+    ParamOverrides overrides = requested.params;
+    if (requested.t_end > 0.0) overrides.push_back({"t_end", {requested.t_end}});
+    const auto scene = make_scene(requested.scene, overrides);
+    const auto* probe = dynamic_cast<const StabilityProbe*>(scene.get());
+    if (!probe) throw InputError("scene '" + requested.scene + "' is not a stability scene");
+    RunResult result{requested, {}, {}};
+    result.spec.t_end = scene->t_end();
+    const StabilityCriterion criterion{stability_horizon_periods * probe->period(), stability_growth};
+    const double limit = empirical_limit(*scene, requested.scheme, probe->predicted_limit(), criterion);
+    if (interrupt_signal()) {
+        result.interrupted = true;
+        return result;
+    }
+    result.metrics = {{"dt_empirical", limit},
+                      {"dt_peng", probe->predicted_limit()},
+                      {"stability_ratio", limit / probe->predicted_limit()}};
+    return result;
+}
+
+}  // namespace rotbench

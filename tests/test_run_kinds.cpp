@@ -1,0 +1,44 @@
+// The kinds of run besides the trajectory (harness/engine/run_kinds.hpp): the reversal and
+// the stability search, made by the same engine (run_one) as every other run.
+#include "harness/analysis/stability.hpp"
+#include "harness/analysis/stability_study.hpp"
+#include "harness/engine/run.hpp"
+#include "harness/engine/sweep.hpp"
+
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <limits>
+
+using namespace rotbench;
+
+TEST_CASE("a reversal run returns a symmetric scheme to its start to round-off, and not a non-symmetric one") {
+    // no_squish is a symmetric splitting of exact flows; fincham's explicit mid-point rule is not.
+    const RunResult symmetric = run_one({"dipole_top", "no_squish", 0.01, 10.0, {}, RunKind::reversal});
+    const RunResult explicit_midpoint = run_one({"dipole_top", "fincham", 0.01, 10.0, {}, RunKind::reversal});
+    REQUIRE(symmetric.failure.empty());
+    CHECK(symmetric.value("steps") == 1000);
+    // 2000 steps, each rounding every component a few times: 2 N x 4 eps bounds the walk.
+    const double bound = 2.0 * 1000 * 4.0 * std::numeric_limits<double>::epsilon();
+    CHECK(symmetric.value("reversal_angle") < bound);
+    CHECK(symmetric.value("reversal_omega") < bound);
+    // The explicit mid-point rule leaves an O(dt^2) error per step that the way back does not undo.
+    CHECK(explicit_midpoint.value("reversal_angle") > 1e-8);
+}
+
+TEST_CASE("a reversal run of a scheme that blows up or throws is a failed run, not a crash") {
+    const RunResult r = run_one({"dipole_top", "test_nan", 0.01, 1.0, {}, RunKind::reversal});
+    CHECK(r.value("unstable") == 1);
+    CHECK(std::isnan(r.value("reversal_angle")));
+    CHECK_FALSE(r.failure.empty());
+}
+
+TEST_CASE("a stability-search run gives the limit the stability analysis finds") {
+    const RunResult r = run_one({"sphere_pair", "direct", 0.0, 0.0, {{"zeta", {0.3}}}, RunKind::stability});
+    const auto scene = make_scene("sphere_pair", {{"zeta", {0.3}}});
+    const auto& probe = dynamic_cast<const StabilityProbe&>(*scene);
+    const double limit = empirical_limit(*scene, "direct", probe.predicted_limit(),
+                                         {stability_horizon_periods * probe.period(), stability_growth});
+    CHECK(r.value("dt_empirical") == limit);
+    CHECK(r.value("dt_peng") == probe.predicted_limit());
+    CHECK(r.value("stability_ratio") == limit / probe.predicted_limit());
+}
