@@ -8,7 +8,7 @@ set -euo pipefail
 cd "$(dirname "$0")"
 
 packages=(cmake ninja-build g++ libeigen3-dev libxsimd-dev catch2 libbenchmark-dev valgrind libboost-dev libgsl-dev libfmt-dev
-          libcli11-dev libtomlplusplus-dev gnuplot-nox python3)  # python3: benchmarks/cost.sh
+          libcli11-dev libtomlplusplus-dev nlohmann-json3-dev gnuplot-nox python3)  # python3: benchmarks/cost.sh
 
 missing=()
 for p in "${packages[@]}"; do

@@ -1,17 +1,27 @@
-// What `rotbench gate` prints and writes: a readable summary, JUnit XML (one test case per
-// check and scheme) and gate.csv.
+// What `rotbench gate` prints and writes: a readable summary, JUnit XML, gate.csv,
+// summary.json (docs/gate.md gives its fields), a Markdown job summary, and GitHub Actions
+// annotations. Each is a function of the gate's result alone.
 #pragma once
 
 #include "harness/gate/gate.hpp"
+#include "reports/provenance.hpp"
 
 #include <string>
-#include <vector>
 
 namespace rotbench {
 
-std::string gate_summary(const std::vector<GateCheck>& checks, const GateResult& result);
-std::string gate_junit(const std::vector<GateCheck>& checks, const GateResult& result);
-// scene,scheme,check,criterion,metric,bound,measured,passed,detail
-std::string gate_csv(const std::vector<GateCheck>& checks, const GateResult& result);
+// One line per verdict (PASS, FAIL, XFAIL: an expected failure, XPASS: an unexpected pass),
+// the warnings, and the counts.
+std::string gate_summary(const GateResult& result);
+// One test case per verdict; an expected failure is <skipped> with its reason.
+std::string gate_junit(const GateResult& result, const std::string& gate_file);
+// scene,scheme,check,family,criterion,outcome,measured,lo,hi,bound,message
+std::string gate_csv(const GateResult& result);
+std::string gate_summary_json(const GateResult& result, const std::string& gate_file, const Provenance& provenance);
+// For $GITHUB_STEP_SUMMARY: the counts, a table per scheme, and every failure.
+std::string gate_markdown(const GateResult& result, const std::string& gate_file);
+// "::error file=...,line=...::message" for every failure and unexpected pass, and
+// "::warning ...::" for the warnings.
+std::string gate_annotations(const GateResult& result);
 
 }  // namespace rotbench

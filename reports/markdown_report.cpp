@@ -1,8 +1,8 @@
 #include "reports/markdown_report.hpp"
 
 #include "reports/cost_table.hpp"
+#include "reports/provenance.hpp"
 
-#include "build_info.hpp"
 #include "references/odeint_reference.hpp"
 #include "reports/convergence_plots.hpp"
 #include "reports/energy_series.hpp"
@@ -12,12 +12,9 @@
 #include "reports/seed_table1.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
-#include <fmt/chrono.h>
 #include <fmt/format.h>
 #include <fmt/ranges.h>
-#include <fstream>
 #include <map>
 #include <set>
 
@@ -60,13 +57,6 @@ std::string table_head(const std::string& first, const std::vector<std::string>&
         rule += "---:|";
     }
     return head + "\n" + rule + "\n";
-}
-
-std::string cpu_model() {
-    std::ifstream in("/proc/cpuinfo");
-    for (std::string line; std::getline(in, line);)
-        if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
-    return "unknown CPU";
 }
 
 const OrderRow* find_order(const std::vector<OrderRow>& orders, const std::string& scene, const std::string& scheme,
@@ -277,10 +267,9 @@ std::string markdown_report(const ResultSet& set, const std::string& command_lin
     std::vector<ExpectedOrder> expected;
     for (const auto& [id, info] : set.schemes) add_expected_orders(id, info.claims, expected);
     std::string md = "# rotbench report\n\n";
-    md += fmt::format("rotbench {} (commit {}), {} {}, flags `{}`, on {}; generated {:%Y-%m-%d %H:%M} UTC.\n\n",
-                      build_info::version, build_info::commit, build_info::compiler, build_info::build_type,
-                      build_info::flags, cpu_model(),
-                      fmt::gmtime(std::chrono::system_clock::to_time_t(std::chrono::system_clock::now())));
+    const Provenance p = provenance();
+    md += fmt::format("rotbench {} (commit {}), {} {}, flags `{}`, on {}; generated {} {} UTC.\n\n", p.version, p.commit,
+                      p.compiler, p.build_type, p.flags, p.cpu, p.date.substr(0, 10), p.date.substr(11, 5));
     md += fmt::format("Command: `{}`\n\n", command_line);
     const auto unstable = std::count_if(results.begin(), results.end(), [](const RunResult& r) { return r.value("unstable") != 0.0; });
     md += fmt::format("{} runs, {} unstable or failed. Errors are in rad/s (angular velocity) and rad (orientation); "

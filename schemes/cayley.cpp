@@ -61,7 +61,8 @@ const RegisterScheme<KickDriftKick<CayleyRotation>> registration(
     {.without_torque = {2, "a variational integrator with a symmetric discrete Lagrangian: second order"},
      .with_torque = {2, "trapezoidal kicks around a second-order rotation: second order"},
      .conserves_momentum = true,
-     .bounded_energy = true});
+     .bounded_energy = true,
+     .time_reversible = true});
 
 }  // namespace
 }  // namespace rotbench

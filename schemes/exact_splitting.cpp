@@ -34,7 +34,8 @@ const RegisterScheme<KickDriftKick<ExactFreeRotation>> registration(
     {.with_torque = {2, "Strang splitting of the exact free flow and the torque kicks: second order"},
      .exact_without_torque = true,
      .conserves_momentum = true,
-     .bounded_energy = true});
+     .bounded_energy = true,
+     .time_reversible = true});
 
 }  // namespace
 }  // namespace rotbench

@@ -54,7 +54,8 @@ const RegisterScheme<KickDriftKick<NoSquishRotation>> registration(
     {.without_torque = {2, "a symmetric composition of exact flows (Strang splitting): second order"},
      .with_torque = {2, "symmetric kicks with T^n and T^{n+1} around a second-order free rotation: second order"},
      .conserves_momentum = true,
-     .bounded_energy = true});
+     .bounded_energy = true,
+     .time_reversible = true});
 
 }  // namespace
 }  // namespace rotbench

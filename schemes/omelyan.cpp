@@ -36,7 +36,8 @@ const RegisterScheme<KickDriftKick<OmelyanRotation>> registration(
     {.without_torque = {2, "an implicit mid-point rule on q at constant L, time-reversible: second order"},
      .with_torque = {2, "trapezoidal kicks around a second-order rotation: second order"},
      .conserves_momentum = true,
-     .bounded_energy = true});
+     .bounded_energy = true,
+     .time_reversible = true});
 
 }  // namespace
 }  // namespace rotbench

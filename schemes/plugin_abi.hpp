@@ -8,8 +8,8 @@
 #include "schemes/scheme.hpp"  // brings in <string> and Eigen, whose macros are read below
 
 // Raise when anything in schemes/scheme.hpp, schemes/bodies.hpp or schemes/registry.hpp
-// changes layout or meaning. 2: RotationScheme::lanes().
-#define ROTBENCH_PLUGIN_ABI_VERSION 2
+// changes layout or meaning. 2: RotationScheme::lanes(). 3: SchemeClaims::time_reversible.
+#define ROTBENCH_PLUGIN_ABI_VERSION 3
 
 #define ROTBENCH_ABI_STR2(x) #x
 #define ROTBENCH_ABI_STR(x) ROTBENCH_ABI_STR2(x)

@@ -30,7 +30,8 @@ const RegisterScheme<KickDriftKick<RozmanovKusalikRotation>> registration(
     {.without_torque = {2, "a time-reversible mid-point rotation at constant L: second order"},
      .with_torque = {2, "trapezoidal kicks around a second-order rotation: second order"},
      .conserves_momentum = true,
-     .bounded_energy = true});
+     .bounded_energy = true,
+     .time_reversible = true});
 
 }  // namespace
 }  // namespace rotbench

@@ -44,7 +44,13 @@ struct SchemeClaims {
     bool exact_without_torque = false;  // the torque-free motion is exact (round-off only)
     bool conserves_momentum = false;    // world angular momentum kept to round-off without torque
     bool bounded_energy = false;        // no secular energy drift in a conservative scene (symplectic or reversible)
-    bool sound = true;                  // false: a deliberately wrong control (no_gyro)
+    bool time_reversible = false;       // stepping back with -dt from the end returns to the start, to round-off
+    bool sound = true;                  // false: a deliberately wrong control (no_gyro), expected to fail
+
+    bool claims_nothing() const {
+        return without_torque.order == 0 && with_torque.order == 0 && !exact_without_torque && !conserves_momentum &&
+               !bounded_energy && !time_reversible;
+    }
 };
 
 using SchemeRegistry = Registry<RotationScheme, SchemeClaims>;

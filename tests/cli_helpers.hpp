@@ -11,6 +11,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <sys/wait.h>
 #include <unistd.h>
 #include <vector>
 
@@ -61,6 +62,47 @@ inline std::string without_timing(const std::string& csv) {
 }
 
 inline bool one_line(const std::string& s) { return !s.empty() && s.find('\n') == s.size() - 1; }
+
+// A program run with its arguments, no shell; its exit status (128 + signal if killed).
+inline int run_program(std::vector<std::string> argv_text) {
+    const pid_t pid = fork();
+    if (pid == 0) {
+        std::vector<char*> argv;
+        for (auto& a : argv_text) argv.push_back(a.data());
+        argv.push_back(nullptr);
+        execvp(argv[0], argv.data());
+        _exit(127);
+    }
+    int status = 0;
+    waitpid(pid, &status, 0);
+    return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+}
+
+// The real binary run with `args` (no shell) and, besides the environment of the tests,
+// `environment` ("NAME=VALUE"); its status and what it printed. The real binary holds none
+// of the test-only schemes that this test program registers.
+inline Cli binary(const std::vector<std::string>& args, const std::vector<std::string>& environment = {}) {
+    static int serial = 0;
+    const fs::path base = fs::temp_directory_path() / ("rotbench_binary_" + std::to_string(::getpid()) + "_" + std::to_string(serial++));
+    std::vector<std::string> argv_text = {ROTBENCH_EXE};
+    argv_text.insert(argv_text.end(), args.begin(), args.end());
+    const pid_t pid = fork();
+    if (pid == 0) {
+        if (!freopen((base.string() + ".out").c_str(), "w", stdout) || !freopen((base.string() + ".err").c_str(), "w", stderr)) _exit(126);
+        for (const auto& e : environment) putenv(const_cast<char*>(e.c_str()));
+        std::vector<char*> argv;
+        for (auto& a : argv_text) argv.push_back(a.data());
+        argv.push_back(nullptr);
+        execv(argv[0], argv.data());
+        _exit(127);
+    }
+    int status = 0;
+    waitpid(pid, &status, 0);
+    Cli r{WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status), read(base.string() + ".out"), read(base.string() + ".err")};
+    fs::remove(base.string() + ".out");
+    fs::remove(base.string() + ".err");
+    return r;
+}
 
 
 inline void write(const fs::path& p, const std::string& text) {

@@ -1,5 +1,5 @@
 #include "harness/io/config.hpp"
-#include "harness/gate/gate.hpp"
+#include "harness/gate/gate_file.hpp"
 #include "harness/engine/export.hpp"
 
 #include <catch2/catch.hpp>
@@ -111,7 +111,7 @@ TEST_CASE("TOML text is made ASCII before Debian's toml++ 3.3.0 reads it, or ref
 TEST_CASE("a gate's why, written with non-ASCII text, reads back unchanged") {
     const auto checks = parse_gate("[[check]]\nscene = \"asymmetric_free\"\nschemes = [\"direct\"]\nmin_order = 1\n"
                                    "why = \"\xce\x94t \xe2\x86\x92 0: \xcf\x89 error ~ \xce\x94t \xf0\x9f\x98\x80\"  # \xce\xb1\n",
-                                   "g.toml");
+                                   "g.toml").checks;
     REQUIRE(checks.size() == 1);
     CHECK(checks[0].why == "\xce\x94t \xe2\x86\x92 0: \xcf\x89 error ~ \xce\x94t \xf0\x9f\x98\x80");
 }

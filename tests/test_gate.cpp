@@ -1,8 +1,8 @@
-// `rotbench gate`: the default gate passes every sound scheme and fails the negative
-// control with its reason; bad gate files are answered with file, line and column.
+// `rotbench gate`: every scheme held to its own claims, controls expected to fail, and the
+// outputs CI reads. The default gate runs in the real binary, which holds none of the
+// test-only schemes this test program registers.
 #include "harness/gate/gate.hpp"
 #include "reports/gate_report.hpp"
-#include "schemes/scheme.hpp"
 #include "tests/cli_helpers.hpp"
 
 #include <algorithm>
@@ -13,65 +13,91 @@ using namespace rotbench::test;
 
 namespace {
 
-// The default gate without its cost checks: CPU-time ratios belong to the CI step that runs
-// the whole gate, not to unit tests on a shared machine.
-std::vector<GateCheck> default_gate_without_timing() {
-    auto checks = load_gate(DEFAULT_GATE);
-    checks.erase(std::remove_if(checks.begin(), checks.end(), [](const GateCheck& c) { return c.criterion == "max_cost_ratio"; }),
-                 checks.end());
-    return checks;
+std::size_t count_of(const std::string& text, const std::string& what) {
+    std::size_t n = 0;
+    for (auto p = text.find(what); p != std::string::npos; p = text.find(what, p + 1)) ++n;
+    return n;
+}
+
+// A strict XML parser's verdict on a file: Python's expat refuses anything not well-formed.
+bool well_formed_xml(const fs::path& file) {
+    return run_program({"python3", "-c", "import sys, xml.dom.minidom; xml.dom.minidom.parse(sys.argv[1])", file.string()}) == 0;
+}
+
+// Python's json module in strict mode: UTF-8, no bare control characters.
+bool valid_json(const fs::path& file) {
+    return run_program({"python3", "-c", "import sys, json; json.load(open(sys.argv[1], encoding='utf-8', errors='strict'))",
+                        file.string()}) == 0;
 }
 
 }  // namespace
 
-TEST_CASE("the default gate passes every sound scheme and fails no_gyro, saying why") {
-    const auto checks = default_gate_without_timing();
-    REQUIRE(checks.size() >= 8);
-    const GateResult result = run_gate(checks, 2);
-    int no_gyro_failures = 0;
-    for (const auto& o : result.outcomes) {
-        const bool sound = SchemeRegistry::instance().at(o.scheme, "scheme").extra.sound;
-        INFO(o.scheme << ": " << checks[o.check].name << ": " << o.detail);
-        if (o.scheme == "no_gyro") no_gyro_failures += !o.passed;
-        else if (sound) CHECK(o.passed);
-    }
-    // It fails the order checks on both tops, the error on the cylinder and the momentum drift.
-    CHECK(no_gyro_failures >= 4);
-    const std::string summary = gate_summary(checks, result);
-    CHECK_THAT(summary, Catch::Contains("FAIL asymmetric_free/no_gyro"));
-    CHECK_THAT(summary, Catch::Contains("does not fall as a power of dt"));
-    CHECK_THAT(summary, Catch::Contains("gyroscopic term"));
-}
-
-TEST_CASE("gate: JUnit XML has one test case per check and scheme, and a failure element per failed one") {
-    const fs::path dir = fresh_dir("gate_junit");
+TEST_CASE("the default gate exits 0 on a sound build, with no_gyro's failures listed as expected") {
+    const fs::path dir = fresh_dir("gate_default");
     fs::create_directories(dir);
-    write(dir / "g.toml", "[[check]]\nname = \"a <b> & \\\"c\\\"\"\nscene = \"asymmetric_free\"\nschemes = [\"direct\", \"no_gyro\"]\n"
-                          "max_error = 0.5\ndt = 0.05\nwhy = \"x\"\n");
-    const Cli r = cli({"gate", (dir / "g.toml").string(), "--junit", (dir / "g.xml").string(), "--out", (dir / "out").string()});
-    CHECK(r.status == 1);
-    const std::string xml = read(dir / "g.xml");
-    const auto count = [&](const std::string& s) {
-        std::size_t n = 0;
-        for (auto p = xml.find(s); p != std::string::npos; p = xml.find(s, p + 1)) ++n;
-        return n;
-    };
-    CHECK(count("<testcase ") == 2);
-    CHECK(count("<failure ") == 1);
-    CHECK_THAT(xml, Catch::Contains("tests=\"2\" failures=\"1\""));
-    CHECK_THAT(xml, Catch::Contains("a &lt;b&gt; &amp; &quot;c&quot;"));
-    CHECK_THAT(read(dir / "out" / "gate.csv"), Catch::StartsWith("scene,scheme,check,criterion,metric,bound,measured,passed,detail\n"));
-    CHECK_THAT(r.out, Catch::EndsWith("1 of 2 checks passed; failing: no_gyro\n"));
+    const Cli r = binary({"gate", DEFAULT_GATE, "--junit", (dir / "gate.xml").string()});
+    INFO(r.out << r.err);
+    CHECK(r.status == 0);
+    CHECK_THAT(r.out, Catch::Contains("0 failed"));
+    CHECK_THAT(r.out, Catch::Contains("0 unexpected passes"));
+    // no_gyro, a control, fails the sanity checks it is held to: expected.
+    CHECK(count_of(r.out, "XFAIL asymmetric_free/no_gyro") == 2);
+    CHECK(count_of(r.out, "XFAIL dipole_top/no_gyro") == 1);
+    CHECK(count_of(r.out, "\nFAIL ") == 0);
+    // Every claim of every scheme is checked: orders on the two free scenes and the torqued one.
+    CHECK_THAT(r.out, Catch::Contains("PASS tumbling_brick/zvw: zvw: order_without_torque"));
+    CHECK_THAT(r.out, Catch::Contains("PASS dipole_top/no_squish: no_squish: time_reversible"));
+    CHECK_THAT(r.out, Catch::Contains("PASS asymmetric_free/exact_splitting: exact_splitting: exact_without_torque"));
+    const std::string xml = read(dir / "gate.xml");
+    CHECK(count_of(xml, "<skipped message=\"expected failure: no_gyro is a control") == 5);
+    CHECK(count_of(xml, "<failure ") == 0);
+    CHECK(well_formed_xml(dir / "gate.xml"));
+    CHECK(valid_json(dir / "summary.json"));
     fs::remove_all(dir);
 }
 
-TEST_CASE("gate: exit status 0 when every check passes") {
-    const fs::path dir = fresh_dir("gate_pass");
+TEST_CASE("a plug-in that claims zvw's second order and delivers first fails the default gate on the order claim") {
+    const Cli r = binary({"gate", DEFAULT_GATE, "--plugin", PLUGIN_END_VELOCITY_ZVW});
+    CHECK(r.status == 1);
+    CHECK_THAT(r.out, Catch::Contains("FAIL asymmetric_free/zvw_end_velocity: zvw_end_velocity: order_without_torque on "
+                                      "asymmetric_free: observed order 1.00"));
+    CHECK_THAT(r.out, Catch::Contains("claimed 2: more than 0.2 away"));
+    CHECK_THAT(r.out, Catch::Contains("FAIL tumbling_brick/zvw_end_velocity"));
+    CHECK_THAT(r.out, Catch::EndsWith("failing: zvw_end_velocity\n"));
+}
+
+TEST_CASE("the q^n-frame Fincham leapfrog fails the default gate on its order claims") {
+    const Cli r = binary({"gate", DEFAULT_GATE, "--plugin", PLUGIN_QN_FRAME_FINCHAM});
+    CHECK(r.status == 1);
+    CHECK_THAT(r.out, Catch::Contains("FAIL asymmetric_free/fincham_qn_frame: fincham_qn_frame: order_without_torque"));
+    CHECK_THAT(r.out, Catch::Contains("FAIL dipole_top/fincham_qn_frame: fincham_qn_frame: order_with_torque"));
+}
+
+TEST_CASE("a plug-in that claims nothing gets the generic sanity checks and a warning") {
+    const Cli r = binary({"gate", DEFAULT_GATE, "--plugin", PLUGIN_CLAIMS_NOTHING});
+    CHECK(r.status == 0);  // a sound scheme passes them
+    CHECK_THAT(r.out, Catch::Contains("WARNING claims_nothing registers no claims"));
+    CHECK_THAT(r.out, Catch::Contains("PASS asymmetric_free/claims_nothing: claims_nothing: sanity_order"));
+    CHECK_THAT(r.out, Catch::Contains("PASS tumbling_brick/claims_nothing: claims_nothing: sanity_momentum"));
+}
+
+TEST_CASE("gate: a check marked as expected to fail is fine when it fails, and fails the gate when it passes") {
+    const fs::path dir = fresh_dir("gate_expected");
     fs::create_directories(dir);
-    write(dir / "g.toml", "[[check]]\nscene = \"asymmetric_free\"\nschemes = [\"zvw\"]\nmin_order = 1.8\ndt = [0.02, 0.01, 0.005, 0.0025]\n");
-    const Cli r = cli({"gate", (dir / "g.toml").string()});
-    CHECK(r.status == 0);
-    CHECK_THAT(r.out, Catch::Contains("1 of 1 checks passed"));
+    const std::string check = "[[check]]\nname = \"tight\"\nscene = \"asymmetric_free\"\nschemes = [\"direct\", \"zvw\"]\n"
+                              "max_error = 1e-3\ndt = 0.05\n";
+    write(dir / "fails.toml", check + "[[expected_failure]]\ncheck = \"tight\"\nscene = \"asymmetric_free\"\nscheme = \"direct\"\n"
+                                      "reason = \"first order: 0.05 is far too coarse for it\"\n");
+    const Cli failing = cli({"gate", (dir / "fails.toml").string()});
+    CHECK(failing.status == 0);
+    CHECK_THAT(failing.out, Catch::Contains("XFAIL asymmetric_free/direct"));
+    CHECK_THAT(failing.out, Catch::Contains("expected to fail: first order: 0.05 is far too coarse for it"));
+    write(dir / "passes.toml", check + "[[expected_failure]]\ncheck = \"tight\"\nscene = \"asymmetric_free\"\nscheme = \"zvw\"\n"
+                                       "reason = \"wrongly expected\"\n");
+    const Cli passing = cli({"gate", (dir / "passes.toml").string()});
+    CHECK(passing.status == 1);
+    CHECK_THAT(passing.out, Catch::Contains("XPASS asymmetric_free/zvw"));
+    CHECK_THAT(passing.out, Catch::Contains("1 unexpected passes"));
     fs::remove_all(dir);
 }
 
@@ -80,12 +106,73 @@ TEST_CASE("gate: a scheme that throws or blows up fails its checks and the gate 
     fs::create_directories(dir);
     write(dir / "g.toml", "[[check]]\nscene = \"asymmetric_free\"\nschemes = [\"test_throws\", \"test_nan\", \"zvw\"]\n"
                           "min_order = 1.8\ndt = [0.02, 0.01, 0.005]\n");
-    const GateResult result = run_gate(load_gate((dir / "g.toml").string()), 2);
-    REQUIRE(result.outcomes.size() == 3);
-    CHECK_FALSE(result.outcomes[0].passed);
-    CHECK_THAT(result.outcomes[0].detail, Catch::Contains("failed"));
-    CHECK_FALSE(result.outcomes[1].passed);
-    CHECK(result.outcomes[2].passed);
+    const Cli r = cli({"gate", (dir / "g.toml").string()});
+    // test_throws and test_nan are controls: their failures are expected; zvw passes.
+    CHECK(r.status == 0);
+    CHECK_THAT(r.out, Catch::Contains("XFAIL asymmetric_free/test_throws"));
+    CHECK_THAT(r.out, Catch::Contains("threw: plug-in bug"));
+    CHECK_THAT(r.out, Catch::Contains("XFAIL asymmetric_free/test_nan"));
+    CHECK_THAT(r.out, Catch::Contains("PASS asymmetric_free/zvw"));
+    fs::remove_all(dir);
+}
+
+TEST_CASE("gate: the CI outputs (JUnit, summary.json, gate.csv, Markdown, annotations)") {
+    const fs::path dir = fresh_dir("gate_outputs");
+    fs::create_directories(dir);
+    write(dir / "g.toml", "[[check]]\nname = \"a <b> & \\\"c\\\"\"\nscene = \"asymmetric_free\"\nschemes = [\"direct\", \"zvw\"]\n"
+                          "max_error = 0.05\ndt = 0.05\nwhy = \"x\"\n");
+    const std::string step_summary = (dir / "step_summary.md").string();
+    write(step_summary, "earlier step\n");
+    const Cli r = binary({"gate", (dir / "g.toml").string(), "--junit", (dir / "j" / "gate.xml").string(), "--out", (dir / "out").string()},
+                         {"GITHUB_ACTIONS=true", "GITHUB_STEP_SUMMARY=" + step_summary});
+    CHECK(r.status == 2);  // the --junit directory does not exist
+    fs::create_directories(dir / "j");
+    const Cli ok = binary({"gate", (dir / "g.toml").string(), "--junit", (dir / "j" / "gate.xml").string(), "--out",
+                           (dir / "out").string(), "--summary", (dir / "summary.md").string()},
+                          {"GITHUB_ACTIONS=true", "GITHUB_STEP_SUMMARY=" + step_summary});
+    CHECK(ok.status == 1);  // direct is first order: 0.05 is too coarse for 5e-2 rad/s
+    const std::string xml = read(dir / "j" / "gate.xml");
+    CHECK(count_of(xml, "<testcase ") == 2);
+    CHECK(count_of(xml, "<failure ") == 1);
+    CHECK_THAT(xml, Catch::Contains("name=\"a &lt;b&gt; &amp; &quot;c&quot; on asymmetric_free\""));
+    CHECK_THAT(xml, Catch::Contains(" line=\"1\" time=\""));
+    CHECK(well_formed_xml(dir / "j" / "gate.xml"));
+    CHECK(valid_json(dir / "j" / "summary.json"));
+    const std::string json = read(dir / "j" / "summary.json");
+    for (const char* field : {"\"provenance\"", "\"commit\"", "\"compiler\"", "\"flags\"", "\"cpu\"", "\"date\"", "\"schemes\"",
+                              "\"checks\"", "\"outcome\": \"fail\"", "\"interval\""})
+        CHECK_THAT(json, Catch::Contains(field));
+    CHECK_THAT(read(dir / "out" / "gate.csv"), Catch::StartsWith("scene,scheme,check,family,criterion,outcome,measured,lo,hi,bound,message\n"));
+    // The step summary is appended to, never replaced; --summary holds the same Markdown.
+    const std::string appended = read(step_summary);
+    CHECK_THAT(appended, Catch::StartsWith("earlier step\n## rotbench gate: FAILED"));
+    CHECK_THAT(read(dir / "summary.md"), Catch::StartsWith("## rotbench gate: FAILED"));
+    // Under GitHub Actions, an annotation for the failure, with the file and line of the check.
+    CHECK_THAT(ok.out, Catch::Contains("::error file=" + (dir / "g.toml").string() + ",line=1,title=rotbench gate%3A direct a <b> & \"c\"::"));
+    fs::remove_all(dir);
+}
+
+TEST_CASE("gate: JUnit XML stays well-formed for any message (control characters, invalid UTF-8, markup)") {
+    GateResult result;
+    Verdict v;
+    v.of.id = "claim\x01 <&>\"'";
+    v.of.scene = "asymmetric_free";
+    v.of.scheme = "hostile";
+    v.of.location = "g.toml:3";
+    v.message = std::string("threw: \x00\x07\x1b[31m red \xff\xfe bad \xc3\x28 ]]> \xef\xbf\xbe end", 36) + "\nnext line\r\n";
+    result.verdicts = {v};
+    v.of.expected_to_fail = true;
+    v.of.expected_reason = "\x02 reason \xe2\x28\xa1";
+    result.verdicts.push_back(v);
+    result.warnings = {"hostile warns \x03 \xf0\x28\x8c\x28"};
+    const fs::path dir = fresh_dir("gate_hostile");
+    fs::create_directories(dir);
+    write(dir / "j.xml", gate_junit(result, "g.toml"));
+    CHECK(well_formed_xml(dir / "j.xml"));
+    write(dir / "s.json", gate_summary_json(result, "g\xff.toml", provenance()));
+    CHECK(valid_json(dir / "s.json"));
+    const std::string annotations = gate_annotations(result);
+    CHECK(count_of(annotations, "\n") == 2);  // one line each: the warning and the failure (the expected failure is fine)
     fs::remove_all(dir);
 }
 
@@ -97,6 +184,7 @@ TEST_CASE("gate: bad gate files give one line with file, line and column, and ex
         std::string toml, message;
     };
     const std::string head = "[[check]]\nscene = \"asymmetric_free\"\nschemes = [\"direct\"]\n";
+    const std::string claims = "[claims]\nschemes = [\"*\"]\nfree = [\"asymmetric_free\", \"tumbling_brick\"]\ntorque = [\"dipole_top\"]\n";
     const std::vector<Case> cases = {
         {head + "min_order = 1\nmax_error = 1\n", "g.toml:4:13: a check has one criterion"},
         {head + "min_ordre = 1\n", "g.toml:4:13: unknown key 'min_ordre' in [[check]]; valid keys:"},
@@ -114,8 +202,23 @@ TEST_CASE("gate: bad gate files give one line with file, line and column, and ex
         {head + "min_order = 1\nparams = { omega = 1 }\n", "unknown parameter"},
         {head + "min_order = 1\nt_end = 0\n", "'t_end' must be one finite number greater than 0"},
         {"[[check]\n", "g.toml:1:"},
-        {"[run]\n", "unknown entry 'run'; a gate file holds [[check]] tables only"},
-        {"", "no [[check]] in the gate file"},
+        {"[run]\n", "unknown entry 'run'; a gate file holds [claims], [[check]] and [[expected_failure]] tables"},
+        {"", "no [claims] and no [[check]] in the gate file"},
+        {"[claims]\nschemes = [\"*\"]\n", "[claims] needs 'schemes', 'free' and 'torque'"},
+        {"[claims]\nschemes = [\"*\"]\nfree = [\"asymmetric_free\"]\ntorque = [\"dipole_top\"]\n", "'free' needs at least two torque-free scenes"},
+        {"[claims]\nschemes = [\"*\"]\nfree = [\"asymmetric_free\", \"dipole_top\"]\ntorque = [\"dipole_top\"]\n",
+         "g.toml:3:8: 'dipole_top' is not a torque-free scene with a reference"},
+        {"[claims]\nschemes = [\"*\"]\nfree = [\"asymmetric_free\", \"tumbling_brick\"]\ntorque = [\"fibre_bounce\"]\n",
+         "'fibre_bounce' is not a scene with a reference and an orientation-dependent torque"},
+        {claims + "sideways = 1\n", "unknown key 'sideways' in [claims]"},
+        {claims + "[[expected_failure]]\ncheck = \"order_without_torque\"\nscene = \"asymmetric_free\"\nscheme = \"direct\"\n",
+         "needs 'check', 'scene', 'scheme' and a 'reason'"},
+        {claims + "[[expected_failure]]\ncheck = \"nonsense\"\nscene = \"asymmetric_free\"\nscheme = \"direct\"\nreason = \"r\"\n",
+         "expected failure of 'nonsense', which is neither a check of this file nor a claim"},
+        {claims + "[[expected_failure]]\ncheck = \"exact_without_torque\"\nscene = \"asymmetric_free\"\nscheme = \"direct\"\nreason = \"r\"\n",
+         "matches no check the gate makes"},
+        {head + "min_order = 1\n[[expected_failure]]\ncheck = \"min_order\"\nscene = \"dipole_top\"\nscheme = \"direct\"\nreason = \"r\"\n",
+         "check 'min_order' does not run direct on dipole_top"},
     };
     for (const auto& c : cases) {
         write(f, c.toml);

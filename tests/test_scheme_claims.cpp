@@ -161,3 +161,19 @@ TEST_CASE("a scheme that claims bounded energy shows no secular drift over an 8 
     }
     CHECK(growth("direct") > 4.0);  // and the test separates: the first-order direct drifts (19x)
 }
+
+TEST_CASE("a scheme that claims to be time-reversible returns to its start to round-off when stepped back") {
+    const auto reversible = schemes_where([](const SchemeClaims& c) { return c.time_reversible; });
+    REQUIRE(reversible.size() >= 5);
+    for (const auto& scheme : reversible)
+        for (const char* scene : {"dipole_top", "tumbling_brick"}) {
+            const RunResult r = run_one({scene, scheme, 0.01, 0.0, {}, RunKind::reversal});
+            // 2 N steps, each rounding every component a few times: 2 N x 4 eps.
+            const double bound = 2.0 * r.value("steps") * 4.0 * std::numeric_limits<double>::epsilon();
+            INFO(scheme << " on " << scene << ": " << r.value("reversal_angle") << " rad, bound " << bound);
+            CHECK(r.value("reversal_angle") < bound);
+            CHECK(r.value("reversal_omega") < bound);
+        }
+    // And the bound separates: a scheme that does not claim it (fincham's explicit mid-point rule) does not return.
+    CHECK(run_one({"dipole_top", "fincham", 0.01, 0.0, {}, RunKind::reversal}).value("reversal_angle") > 1e-8);
+}

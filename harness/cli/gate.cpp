@@ -1,53 +1,121 @@
-// `rotbench gate FILE`: the checks of a gate file; exit 1 if any fails (harness/gate/gate.hpp).
+// `rotbench gate FILE`: the claims and checks of a gate file (docs/gate.md), run by the same
+// engine as `run` and judged from the results; exit 1 if any check fails or a check expected
+// to fail passes.
 #include "harness/cli/outputs.hpp"
+#include "harness/cli/sweep_command.hpp"
 #include "harness/cli/verb.hpp"
 #include "harness/engine/parallel.hpp"
 #include "harness/gate/gate.hpp"
+#include "harness/io/journal.hpp"
 #include "harness/io/output_files.hpp"
 #include "harness/io/results_csv.hpp"
 #include "reports/gate_report.hpp"
 
-#include <algorithm>
+#include <cstdlib>
+#include <fcntl.h>
+#include <unistd.h>
 
 namespace rotbench {
 namespace {
 
+namespace fs = std::filesystem;
+
+void require_parent(const std::string& option, const std::string& file) {
+    const fs::path parent = fs::path(file).parent_path();
+    if (!parent.empty() && !fs::is_directory(parent))
+        throw InputError(option + " " + file + ": the directory " + parent.string() + " does not exist");
+}
+
+// $GITHUB_STEP_SUMMARY belongs to the CI runner and to every step: appended to, never replaced.
+void append_to(const std::string& path, const std::string& text) {
+    const int fd = ::open(path.c_str(), O_WRONLY | O_APPEND | O_CREAT | O_CLOEXEC, 0644);
+    if (fd < 0) throw InputError("$GITHUB_STEP_SUMMARY " + path + ": cannot open it to append");
+    std::size_t done = 0;
+    while (done < text.size()) {
+        const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
+        if (n <= 0) {
+            ::close(fd);
+            throw InputError("$GITHUB_STEP_SUMMARY " + path + ": cannot append to it");
+        }
+        done += static_cast<std::size_t>(n);
+    }
+    ::close(fd);
+}
+
 class GateVerb final : public Verb {
 public:
     void add_options(CLI::App& command) override {
-        command.add_option("FILE", file_, "gate file (TOML, [[check]] tables)")->required();
-        command.add_option("--junit", junit_, "write JUnit XML here (one test case per check and scheme)");
-        command.add_option("--out", out_, "also write gate.csv and results.csv of the runs here");
+        command.add_option("FILE", file_, "gate file (TOML: [claims], [[check]], [[expected_failure]])")->required();
+        command.add_option("--junit", junit_, "write JUnit XML here, and summary.json beside it");
+        command.add_option("--summary", summary_, "write the Markdown summary here (also appended to $GITHUB_STEP_SUMMARY)");
+        command.add_option("--out", out_, "write gate.csv, summary.json and the runs' results.csv and runs.csv here (and the journal)");
+        command.add_option("--results", results_, "DIR: judge the runs in DIR (e.g. merged shards) instead of running them");
+        command.add_option("--shard", shard_, "K/N: run only the K-th of N slices of the gate's runs (judge the merge with --results)");
         command.add_option("--jobs", jobs_, "runs in parallel (results do not depend on it)")->check(CLI::Range(1, max_jobs));
         command.add_flag("--overwrite", overwrite_, "replace a gate.csv already in --out");
     }
+
     int run(const Invocation& how) override {
-        const auto checks = load_gate(file_);
-        std::filesystem::path dir;
-        if (!out_.empty()) dir = prepare_output(out_, "gate.csv", overwrite_);
+        const GateFile file = load_gate(file_);
+        const GatePlan plan = plan_gate(file);
+        const PlanSlice slice = slice_plan(plan.runs, shard_);
+        if (slice.shard && out_.empty()) throw InputError("--shard needs --out: a slice's runs are only worth their files");
+        if (slice.shard && !results_.empty()) throw InputError("--results judges runs already made: no --shard with it");
+        if (!junit_.empty()) require_parent("--junit", junit_);
+        if (!summary_.empty()) require_parent("--summary", summary_);
+        std::optional<fs::path> dir;
+        if (how.resuming) dir = *how.resuming;
+        else if (!out_.empty()) dir = prepare_output(out_, "gate.csv", overwrite_);
+
+        std::vector<RunResult> runs;
+        if (!results_.empty()) {
+            runs = read_results(results_);
+            if (runs.size() != plan.runs.size())
+                throw InputError("--results " + results_ + ": holds " + std::to_string(runs.size()) + " runs, the gate makes " +
+                                 std::to_string(plan.runs.size()));
+            for (std::size_t i = 0; i < runs.size(); ++i)
+                if (runs[i].spec.scene != plan.runs[i].scene || runs[i].spec.scheme != plan.runs[i].scheme ||
+                    runs[i].spec.kind != plan.runs[i].kind || runs[i].spec.dt != plan.runs[i].dt)
+                    throw InputError("--results " + results_ + ": run " + std::to_string(i + 1) + " is not the one this gate makes there");
+        } else {
+            const SweepOutcome outcome = sweep_plan(slice, dir, how, {.measure_time = true}, jobs_, true);
+            if (outcome.exit_status) return outcome.exit_status;
+            if (slice.shard) {
+                write_slice(*dir, slice, outcome.results, how.out);
+                Journal::discard(*dir);
+                return 0;
+            }
+            runs = outcome.results;
+        }
+
+        const GateResult result = judge_gate(file, plan, std::move(runs));
+        how.out << gate_summary(result);
+        if (std::getenv("GITHUB_ACTIONS") && std::string(std::getenv("GITHUB_ACTIONS")) == "true") how.out << gate_annotations(result);
+        const std::string json = gate_summary_json(result, file_, provenance());
         if (!junit_.empty()) {
-            const std::filesystem::path parent = std::filesystem::path(junit_).parent_path();
-            if (!parent.empty() && !std::filesystem::is_directory(parent))
-                throw InputError("--junit " + junit_ + ": the directory " + parent.string() + " does not exist");
+            write_file_atomically(junit_, gate_junit(result, file_));
+            write_file_atomically(fs::path(junit_).parent_path() / "summary.json", json);
         }
-        const GateResult result = run_gate(checks, jobs_);
-        how.out << gate_summary(checks, result);
-        if (!junit_.empty()) write_file_atomically(junit_, gate_junit(checks, result));
-        if (!dir.empty()) {
-            write_file_atomically(dir / "gate.csv", gate_csv(checks, result));
-            write_file_atomically(dir / "results.csv", results_csv(result.runs));
+        const std::string markdown = gate_markdown(result, file_);
+        if (!summary_.empty()) write_file_atomically(summary_, markdown);
+        if (const char* step = std::getenv("GITHUB_STEP_SUMMARY"); step && *step) append_to(step, markdown);
+        if (dir) {
+            write_file_atomically(*dir / "gate.csv", gate_csv(result));
+            write_file_atomically(*dir / "summary.json", json);
+            write_file_atomically(*dir / "results.csv", results_csv(result.runs));
+            write_file_atomically(*dir / "runs.csv", runs_csv(result.runs));
+            Journal::discard(*dir);
         }
-        const bool passed = std::all_of(result.outcomes.begin(), result.outcomes.end(), [](const GateOutcome& g) { return g.passed; });
-        return passed ? 0 : 1;
+        return result.passed() ? 0 : 1;
     }
 
 private:
-    std::string file_, junit_, out_;
+    std::string file_, junit_, summary_, out_, results_, shard_;
     int jobs_ = core_count();
     bool overwrite_ = false;
 };
 
-const RegisterVerb<GateVerb> registration("gate", "run the checks of a gate file; exit 1 if any fails");
+const RegisterVerb<GateVerb> registration("gate", "hold every scheme to its claims and the checks of a gate file; exit 1 if any fails");
 
 }  // namespace
 }  // namespace rotbench

@@ -76,6 +76,7 @@ void list_markdown(std::ostream& out) {
         if (c.exact_without_torque) also.push_back("exact without torque");
         if (c.conserves_momentum) also.push_back("momentum to round-off");
         if (c.bounded_energy) also.push_back("bounded energy");
+        if (c.time_reversible) also.push_back("time-reversible");
         const auto order = [](const OrderClaim& o) { return o.order > 0 ? std::to_string(o.order) : std::string("—"); };
         out << fmt::format("| `{}` | {} | {} | {} | {} | {} |\n", id, cell(e.summary), cell(e.source), order(c.without_torque),
                            order(c.with_torque), join(also, ", "));

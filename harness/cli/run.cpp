@@ -1,6 +1,7 @@
 // `rotbench run`: the sweep from the options, its outputs, and the journal that lets an
 // interrupted run be resumed (harness/io/journal.hpp).
 #include "harness/cli/outputs.hpp"
+#include "harness/cli/sweep_command.hpp"
 #include "harness/cli/verb.hpp"
 #include "harness/engine/interrupt.hpp"
 #include "harness/engine/parallel.hpp"
@@ -84,73 +85,15 @@ int resume(const CLI::App& run_cmd, const std::string& dir, std::ostream& out, s
 }
 
 int run_sweep_command(const RunOptionsText& o, const Invocation& how) {
-    const std::vector<std::string>& arguments = how.arguments;
-    const std::string& command_line = how.command_line;
-    std::ostream& out = how.out;
-    std::ostream& err = how.err;
-    const std::optional<fs::path>& resuming = how.resuming;
-    auto plan = plan_sweep(sweep_spec(o));  // every input checked before anything runs
-    const std::size_t plan_size = plan.size();
-    const std::string id = plan_id(plan);
-    std::vector<std::size_t> indices;
-    const Shard shard = o.shard.empty() ? Shard{} : parse_shard(o.shard);
-    if (!o.shard.empty()) {
-        // An empty slice would leave merge nothing to recognise it by.
-        if (static_cast<std::size_t>(shard.count) > plan_size)
-            throw InputError(fmt::format("--shard {}: the sweep has only {} run(s), so at most {} shard(s)", o.shard, plan_size, plan_size));
-        indices = shard_indices(plan_size, shard);
-        std::vector<RunSpec> slice;
-        for (std::size_t i : indices) slice.push_back(plan[i]);
-        plan = std::move(slice);
-    }
-    const fs::path dir = resuming ? *resuming : prepare_output(o.out, "results.csv", o.overwrite);
-    const std::string journal_id = fmt::format("{}/{}/{}", id, shard.index, shard.count);
-    const Journal journal =
-        resuming ? Journal::reopen(dir, journal_id, plan.size()) : Journal::start(dir, arguments, journal_id, plan.size());
-
-    std::vector<RunSpec> todo;
-    std::vector<std::size_t> todo_index;
-    {
-        const auto finished = journal.finished();
-        for (std::size_t i = 0; i < plan.size(); ++i)
-            if (!finished.count(i)) todo.push_back(plan[i]), todo_index.push_back(i);
-        if (resuming) out << fmt::format("resuming: {} of {} runs were finished\n", finished.size(), plan.size());
-    }
-    std::size_t kept = plan.size() - todo.size();  // runs in the journal
+    const PlanSlice slice = slice_plan(plan_sweep(sweep_spec(o)), o.shard);  // every input checked before anything runs
+    const fs::path dir = how.resuming ? *how.resuming : prepare_output(o.out, "results.csv", o.overwrite);
     RunOptions options;
     options.series_samples = o.energy_series;
-    {
-        const InterruptGuard guard;
-        run_sweep(
-            todo, options,
-            [&](std::size_t i, const RunResult& r) {
-                journal.record(todo_index[i], r);
-                ++kept;
-                out << fmt::format("{:<16} {:<16} dt={:<10g} {}\n", r.spec.scene, r.spec.scheme, r.spec.dt,
-                                   r.failure.empty() ? "ok" : "FAILED: " + r.failure);
-            },
-            o.jobs);
-        if (const int signal = interrupt_signal()) {
-            err << fmt::format("rotbench: interrupted by signal {}: {} of {} runs are kept in {}; rotbench run --resume {} "
-                               "finishes the sweep\n",
-                               signal, kept, plan.size(), (dir / "partial").string(), dir.string());
-            return 128 + signal;
-        }
-    }
-    // The outputs come from the journal, as a resumed run's do: the two are the same files.
-    std::vector<RunResult> results;
-    for (auto& [index, r] : journal.finished()) results.push_back(std::move(r));
-    if (o.shard.empty()) {
-        write_outputs(dir, results, command_line, out);
-    } else {  // a slice: the runs and series for `merge`, no orders or report (they need every run)
-        write_file_atomically(dir / "results.csv", results_csv(results));
-        write_file_atomically(dir / "runs.csv", runs_csv(results));
-        write_energy_series(results, dir);
-        write_file_atomically(dir / "shard.csv", shard_csv(id, shard.index, shard.count, results, indices, plan_size));
-        out << fmt::format("wrote shard {}/{} ({} of {} runs) to {}; combine the shards with rotbench merge\n", shard.index,
-                           shard.count, results.size(), plan_size, dir.string());
-    }
-    journal.remove();
+    const SweepOutcome outcome = sweep_plan(slice, dir, how, options, o.jobs, false);
+    if (outcome.exit_status) return outcome.exit_status;
+    if (!slice.shard) write_outputs(dir, outcome.results, how.command_line, how.out);
+    else write_slice(dir, slice, outcome.results, how.out);  // no orders or report: they need every run
+    Journal::discard(dir);
     return 0;
 }
 

@@ -101,6 +101,7 @@ public:
             add("omega_rms_z", rms.z());
             add("omega_err_max", std::sqrt(omega_err_sq_max_));
             add("orientation_err_max", orientation_err_max_);
+            add("omega_ref_max", std::sqrt(omega_ref_sq_max_));
         }
         if (tracks_energy_drift_) {
             add("energy_drift_max", energy_drift_);
@@ -130,6 +131,7 @@ private:
             squared_error_sum_ += error_body.cwiseAbs2();
             ++samples_;
             omega_err_sq_max_ = std::max(omega_err_sq_max_, (b.omega[i] - ref.omega).squaredNorm());
+            omega_ref_sq_max_ = std::max(omega_ref_sq_max_, ref.omega.squaredNorm());
             orientation_err_max_ = std::max(orientation_err_max_, rotation_angle_between(q_unit, ref.q));
         }
     }
@@ -162,7 +164,7 @@ private:
     Vec3 squared_error_sum_ = Vec3::Zero();
     std::int64_t samples_ = 0;
     double energy_change_max_ = 0, energy_drift_ = 0, momentum_change_sq_max_ = 0;
-    double quat_norm_sq_max_ = 1, quat_norm_sq_min_ = 1, omega_err_sq_max_ = 0, orientation_err_max_ = 0;
+    double quat_norm_sq_max_ = 1, quat_norm_sq_min_ = 1, omega_err_sq_max_ = 0, orientation_err_max_ = 0, omega_ref_sq_max_ = 0;
     std::int64_t fail_step_ = 0;
     double fail_time_ = 0;
 };
@@ -236,12 +238,15 @@ RunKind kind_from_name(const std::string& name) {
 }
 
 RunResult run_one(const RunSpec& requested, const RunOptions& options) {
+    const double start = thread_cpu_seconds();
+    RunResult r;
     switch (requested.kind) {
-        case RunKind::reversal: return run_reversal(requested);
-        case RunKind::stability: return run_stability_search(requested);
-        case RunKind::trajectory: break;
+        case RunKind::reversal: r = run_reversal(requested); break;
+        case RunKind::stability: r = run_stability_search(requested); break;
+        case RunKind::trajectory: r = run_trajectory(requested, options); break;
     }
-    return run_trajectory(requested, options);
+    if (!r.interrupted) r.metrics.emplace_back("cpu_seconds_run", thread_cpu_seconds() - start);  // all it took
+    return r;
 }
 
 RunResult run_trajectory(const RunSpec& requested, const RunOptions& options) {
@@ -285,7 +290,7 @@ RunResult run_trajectory(const RunSpec& requested, const RunOptions& options) {
 
     CpuTiming cpu{nan, nan, nan, 0, {}};
     std::int64_t timed_steps = 0;
-    if (!unstable && options.measure_time && !interrupt_signal()) {
+    if (!unstable && options.measure_time && requested.timed && !interrupt_signal()) {
         // Timing run: the same loop without the observer, so the reference solution and
         // the metrics are not charged to the scheme.
         const SampledTiming sampling(steps);

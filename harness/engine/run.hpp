@@ -27,6 +27,7 @@ struct RunSpec {
     double t_end = 0.0;      // 0: the scene's default
     ParamOverrides params;  // scene parameters other than t_end, as given by the user
     RunKind kind = RunKind::trajectory;
+    bool timed = true;      // false: no timing repeats (the gate's accuracy runs)
 };
 
 struct RunResult {
@@ -62,7 +63,7 @@ std::int64_t step_count(double t_end, double dt);
 // for a blow-up. The run stops at that step (fail_step, fail_time); its error metrics are NaN.
 inline constexpr double blowup_energy_factor = 1e6;
 
-// The metrics that time a run (cpu_seconds, cpu_seconds_min, cpu_seconds_max,
+// The metrics that time a run (cpu_seconds, cpu_seconds_min, cpu_seconds_max, cpu_seconds_run,
 // timing_repeats, ns_per_step): the only ones two runs of the same command may disagree on.
 inline bool is_timing_metric(const std::string& name) {
     return name.rfind("cpu_seconds", 0) == 0 || name == "ns_per_step" || name == "timing_repeats";

@@ -138,4 +138,6 @@ void Journal::record(std::size_t plan_index, const RunResult& result) const {
 
 void Journal::remove() const { fs::remove_all(dir_); }
 
+void Journal::discard(const fs::path& out_dir) { fs::remove_all(journal_dir(out_dir)); }
+
 }  // namespace rotbench

@@ -42,6 +42,8 @@ public:
     // Writes one finished run. Safe to call from several threads for different indices.
     void record(std::size_t plan_index, const RunResult& result) const;
     void remove() const;
+    // The journal of out_dir, once the outputs it served are written.
+    static void discard(const std::filesystem::path& out_dir);
 
 private:
     explicit Journal(std::filesystem::path dir) : dir_(std::move(dir)) {}

@@ -41,7 +41,8 @@ std::string plan_id(const std::vector<RunSpec>& plan) {
         }
     };
     for (const auto& r : plan) {
-        feed(fmt::format("{}|{}|{}|{:a}|{:a}|", r.scene, r.scheme, kind_name(r.kind), r.dt, r.t_end));
+        feed(fmt::format("{}|{}|{}|{}|{:a}|{:a}|", r.scene, r.scheme, kind_name(r.kind), r.timed ? "timed" : "untimed", r.dt,
+                         r.t_end));
         for (const auto& [key, values] : r.params) {
             feed(key);
             for (double v : values) feed(fmt::format("={:a}", v));

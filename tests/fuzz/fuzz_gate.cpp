@@ -1,6 +1,6 @@
 // libFuzzer target: the gate file parser (harness/gate.cpp), as `rotbench gate FILE`
 // before anything runs.
-#include "harness/gate/gate.hpp"
+#include "harness/gate/gate_file.hpp"
 #include "tests/fuzz/fuzz_input.hpp"
 
 using namespace rotbench;

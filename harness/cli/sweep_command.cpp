@@ -1,0 +1,95 @@
+#include "harness/cli/sweep_command.hpp"
+
+#include "harness/engine/interrupt.hpp"
+#include "harness/engine/sweep.hpp"
+#include "harness/io/journal.hpp"
+#include "harness/io/output_files.hpp"
+#include "harness/io/results_csv.hpp"
+#include "harness/io/series_csv.hpp"
+
+#include <fmt/format.h>
+#include <mutex>
+
+namespace rotbench {
+namespace fs = std::filesystem;
+
+PlanSlice slice_plan(std::vector<RunSpec> plan, const std::string& shard_text) {
+    PlanSlice slice;
+    slice.plan_size = plan.size();
+    slice.plan_id = plan_id(plan);
+    if (shard_text.empty()) {
+        slice.runs = std::move(plan);
+        for (std::size_t i = 0; i < slice.runs.size(); ++i) slice.indices.push_back(i);
+        return slice;
+    }
+    const Shard shard = parse_shard(shard_text);
+    // An empty slice would leave merge nothing to recognise it by.
+    if (static_cast<std::size_t>(shard.count) > plan.size())
+        throw InputError(fmt::format("--shard {}: the sweep has only {} run(s), so at most {} shard(s)", shard_text, plan.size(),
+                                     plan.size()));
+    slice.shard = shard;
+    slice.indices = shard_indices(plan.size(), shard);
+    for (std::size_t i : slice.indices) slice.runs.push_back(plan[i]);
+    return slice;
+}
+
+SweepOutcome sweep_plan(const PlanSlice& slice, const std::optional<fs::path>& dir, const Invocation& how,
+                        const RunOptions& options, int jobs, bool timed_alone) {
+    const Shard shard = slice.shard.value_or(Shard{});
+    const std::string journal_id = fmt::format("{}/{}/{}", slice.plan_id, shard.index, shard.count);
+    std::optional<Journal> journal;
+    if (dir) journal = how.resuming ? Journal::reopen(*dir, journal_id, slice.runs.size())
+                                    : Journal::start(*dir, how.arguments, journal_id, slice.runs.size());
+    std::map<std::size_t, RunResult> finished;
+    if (journal) finished = journal->finished();
+    if (how.resuming) how.out << fmt::format("resuming: {} of {} runs were finished\n", finished.size(), slice.runs.size());
+
+    // What is left, in two phases when the timed runs go alone.
+    std::vector<std::vector<std::size_t>> phases(2);
+    for (std::size_t i = 0; i < slice.runs.size(); ++i)
+        if (!finished.count(i)) phases[timed_alone && slice.runs[i].timed ? 1 : 0].push_back(i);
+    std::mutex mutex;
+    const InterruptGuard guard;
+    for (int phase = 0; phase < 2 && !interrupt_signal(); ++phase) {
+        const auto& todo = phases[phase];
+        std::vector<RunSpec> specs;
+        for (std::size_t i : todo) specs.push_back(slice.runs[i]);
+        run_sweep(
+            specs, options,
+            [&](std::size_t k, const RunResult& r) {
+                if (journal) journal->record(todo[k], r);
+                how.out << fmt::format("{:<16} {:<16} {:<10} dt={:<10g} {}\n", r.spec.scene, r.spec.scheme, kind_name(r.spec.kind),
+                                       r.spec.dt, r.failure.empty() ? "ok" : "FAILED: " + r.failure);
+                std::lock_guard lock(mutex);
+                finished.insert_or_assign(todo[k], r);
+            },
+            phase == 1 ? 1 : jobs);
+    }
+    SweepOutcome outcome;
+    if (const int signal = interrupt_signal()) {
+        how.err << fmt::format("rotbench: interrupted by signal {}: {} of {} runs are kept{}\n", signal, finished.size(),
+                               slice.runs.size(),
+                               dir ? fmt::format(" in {}; rotbench run --resume {} finishes the sweep", (*dir / "partial").string(),
+                                                 dir->string())
+                                   : " (none on disk: give --out to keep them)");
+        outcome.exit_status = 128 + signal;
+        return outcome;
+    }
+    // The results come from the journal where there is one, as a resumed run's do: both
+    // give the same files.
+    if (journal) finished = journal->finished();
+    for (auto& [index, r] : finished) outcome.results.push_back(std::move(r));
+    return outcome;
+}
+
+void write_slice(const fs::path& dir, const PlanSlice& slice, const std::vector<RunResult>& results, std::ostream& out) {
+    write_file_atomically(dir / "results.csv", results_csv(results));
+    write_file_atomically(dir / "runs.csv", runs_csv(results));
+    write_energy_series(results, dir);
+    write_file_atomically(dir / "shard.csv",
+                          shard_csv(slice.plan_id, slice.shard->index, slice.shard->count, results, slice.indices, slice.plan_size));
+    out << fmt::format("wrote shard {}/{} ({} of {} runs) to {}; combine the shards with rotbench merge\n", slice.shard->index,
+                       slice.shard->count, results.size(), slice.plan_size, dir.string());
+}
+
+}  // namespace rotbench

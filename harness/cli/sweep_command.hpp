@@ -1,0 +1,43 @@
+// What the verbs that run a plan share (run, gate): slicing it into shards, running it
+// through the journal of its output directory (so that a signal or a kill loses at most the
+// runs in flight, and `rotbench run --resume DIR` finishes it), and the files of a slice.
+#pragma once
+
+#include "harness/cli/verb.hpp"
+#include "harness/engine/run.hpp"
+#include "harness/io/shard.hpp"
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace rotbench {
+
+// A plan, or the slice of it that --shard K/N asks for.
+struct PlanSlice {
+    std::vector<RunSpec> runs;
+    std::string plan_id;                 // of the whole plan
+    std::size_t plan_size = 0;
+    std::optional<Shard> shard;          // none: the whole plan
+    std::vector<std::size_t> indices;    // of the slice's runs in the whole plan
+};
+PlanSlice slice_plan(std::vector<RunSpec> plan, const std::string& shard_text);
+
+struct SweepOutcome {
+    std::vector<RunResult> results;  // in the slice's order, every run (when not interrupted)
+    int exit_status = 0;             // 128 + signal when SIGINT or SIGTERM cut the sweep short
+};
+
+// Runs the slice, `jobs` at a time, with a line per finished run on how.out. With a directory
+// every finished run goes to its journal (DIR/partial) first, and a resumed invocation
+// (how.resuming) runs only what is missing. `timed_alone`: the runs that are timed go last,
+// one at a time, so that they do not compete for the cores.
+SweepOutcome sweep_plan(const PlanSlice& slice, const std::optional<std::filesystem::path>& dir, const Invocation& how,
+                        const RunOptions& options, int jobs, bool timed_alone);
+
+// A slice's files for `rotbench merge`: results.csv, runs.csv, the energy series, shard.csv.
+void write_slice(const std::filesystem::path& dir, const PlanSlice& slice, const std::vector<RunResult>& results,
+                 std::ostream& out);
+
+}  // namespace rotbench

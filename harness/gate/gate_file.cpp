@@ -1,0 +1,231 @@
+#include "harness/gate/gate_file.hpp"
+
+#include "harness/io/toml_input.hpp"
+#include "harness/scenes/scene.hpp"
+#include "harness/scenes/stability_probe.hpp"
+#include "schemes/scheme.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+#include <map>
+
+namespace rotbench {
+namespace {
+
+const std::vector<std::string> criteria = {"min_order",          "max_error",     "max_energy_drift",
+                                           "max_momentum_drift", "min_stability", "max_cost_ratio"};
+
+std::string metric_of(const std::string& criterion, const std::string& metric) {
+    if (criterion == "max_energy_drift") return "energy_drift_max";
+    if (criterion == "max_momentum_drift") return "momentum_drift_max";
+    if (criterion == "min_order" || criterion == "max_error") return metric.empty() ? "omega_err_max" : metric;
+    return "";
+}
+
+const std::vector<std::string>& known_metrics() {
+    static const std::vector<std::string> m = {"omega_rms_x",      "omega_rms_y",       "omega_rms_z",
+                                               "omega_err_max",    "orientation_err_max", "energy_drift_max",
+                                               "momentum_drift_max", "quat_norm_err_max"};
+    return m;
+}
+
+// Every registered scheme that is not a control: what "*" means in a [[check]].
+std::vector<std::string> sound_schemes() {
+    std::vector<std::string> out;
+    for (const auto& id : SchemeRegistry::instance().ids())
+        if (SchemeRegistry::instance().at(id, "scheme").extra.sound) out.push_back(id);
+    return out;
+}
+
+GateCheck read_check(const std::string& path, const toml::table& t, std::size_t index) {
+    GateCheck c;
+    c.location = fmt::format("{}:{}", path, t.source().begin.line);
+    std::string metric;
+    const toml::node* schemes_node = nullptr;
+    if (const toml::node* scene = t.get("scene")) {  // first: 'params' are checked against it
+        c.scene = text(path, "scene", *scene);
+        try {
+            SceneRegistry::instance().at(c.scene, "scene");
+        } catch (const InputError& e) {
+            toml_error(path, *scene, e.what());
+        }
+    }
+    for (auto&& [k, v] : t) {
+        const std::string key(k.str());
+        if (key == "name") c.name = text(path, key, v);
+        else if (key == "why") c.why = text(path, key, v);
+        else if (key == "scene") continue;
+        else if (key == "schemes") schemes_node = &v;
+        else if (key == "metric") {
+            metric = text(path, key, v);
+            if (std::find(known_metrics().begin(), known_metrics().end(), metric) == known_metrics().end())
+                toml_error(path, v, "unknown metric '" + metric + "'; valid metrics: " + join(known_metrics(), ", "));
+        } else if (key == "dt") {
+            c.dts = numbers(path, key, v);
+            for (double dt : c.dts)
+                if (!(dt > 0.0) || !std::isfinite(dt)) toml_error(path, v, "'dt' values must be finite numbers greater than 0");
+            auto sorted = c.dts;
+            std::sort(sorted.begin(), sorted.end());
+            if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) toml_error(path, v, "'dt' has a duplicate value");
+        } else if (key == "t_end") c.t_end = positive_number(path, key, v);
+        else if (key == "round_off") c.round_off = positive_number(path, key, v);
+        else if (key == "params") {
+            if (!v.as_table()) toml_error(path, v, "'params' must be a table of scene parameters");
+            if (c.scene.empty()) toml_error(path, v, "'params' needs a 'scene'");
+            c.params = scene_overrides(path, c.scene, *v.as_table());
+        } else if (std::find(criteria.begin(), criteria.end(), key) != criteria.end()) {
+            if (!c.criterion.empty()) toml_error(path, v, "a check has one criterion; this one has '" + c.criterion + "' and '" + key + "'");
+            c.criterion = key;
+            const auto b = numbers(path, key, v);
+            if (b.size() != 1 || !std::isfinite(b[0])) toml_error(path, v, "'" + key + "' must be one finite number");
+            c.bound = b[0];
+        } else {
+            toml_error(path, v, "unknown key '" + key + "' in [[check]]; valid keys: name, scene, schemes, metric, dt, t_end, "
+                          "round_off, params, why, " + join(criteria, ", "));
+        }
+    }
+    const auto missing = [&](const std::string& what) {
+        throw InputError(c.location + ": check " + std::to_string(index + 1) + " has no " + what);
+    };
+    if (c.scene.empty()) missing("'scene'");
+    if (!schemes_node) missing("'schemes'");
+    if (c.criterion.empty()) missing("criterion (one of " + join(criteria, ", ") + ")");
+    if (!metric.empty() && c.criterion != "min_order" && c.criterion != "max_error")
+        toml_error(path, t, "'metric' applies to min_order and max_error only");
+    c.metric = metric_of(c.criterion, metric);
+    const auto names = strings(path, "schemes", *schemes_node);
+    if (names.size() == 1 && names[0] == "*") c.schemes = sound_schemes();
+    else c.schemes = ids(path, "schemes", *schemes_node, SchemeRegistry::instance(), "scheme");
+    const bool ladder = c.criterion == "min_order";
+    if (c.criterion == "min_stability") {
+        if (!c.dts.empty()) toml_error(path, t, "min_stability searches for the limit itself: remove 'dt'");
+        if (!dynamic_cast<const StabilityProbe*>(make_scene(c.scene).get())) {
+            std::vector<std::string> valid;
+            for (const auto& id : SceneRegistry::instance().ids())
+                if (dynamic_cast<const StabilityProbe*>(make_scene(id).get())) valid.push_back(id);
+            toml_error(path, t, "min_stability needs a stability scene (" + join(valid, ", ") + "), not '" + c.scene + "'");
+        }
+    } else if (!ladder && c.dts.size() != 1) {
+        toml_error(path, t, "'" + c.criterion + "' needs exactly one 'dt'");
+    }
+    if (ladder && !c.dts.empty() && c.dts.size() < 3) toml_error(path, t, "min_order needs at least 3 time steps in 'dt'");
+    if (c.name.empty()) c.name = c.criterion;
+    make_scene(c.scene, c.params);  // parameters valid together (e.g. moments), named on error
+    return c;
+}
+
+// The scenes of a [claims] list: registered, with a reference, and of the kind the list asks.
+std::vector<std::string> claim_scenes(const std::string& path, const std::string& key, const toml::node& node, bool torque) {
+    const auto list = ids(path, key, node, SceneRegistry::instance(), "scene");
+    if (list.empty()) toml_error(path, node, "'" + key + "' is an empty list");
+    for (const auto& id : list) {
+        const auto scene = make_scene(id);
+        const bool fits = scene->has_reference() &&
+                          (torque ? scene->torque_depends_on_orientation() && scene->conserves_energy()
+                                  : scene->conserves_angular_momentum());
+        if (!fits)
+            toml_error(path, node, "'" + id + "' is not a " +
+                                       (torque ? std::string("scene with a reference and an orientation-dependent torque that conserves energy")
+                                               : std::string("torque-free scene with a reference")));
+    }
+    return list;
+}
+
+ClaimsSection read_claims(const std::string& path, const toml::table& t) {
+    ClaimsSection c;
+    c.present = true;
+    c.location = fmt::format("{}:{}", path, t.source().begin.line);
+    bool has_schemes = false, has_free = false, has_torque = false;
+    for (auto&& [k, v] : t) {
+        const std::string key(k.str());
+        if (key == "schemes") {
+            const auto names = strings(path, key, v);
+            c.schemes = names.size() == 1 && names[0] == "*" ? SchemeRegistry::instance().ids()
+                                                               : ids(path, key, v, SchemeRegistry::instance(), "scheme");
+            has_schemes = true;
+        } else if (key == "free") {
+            c.free_scenes = claim_scenes(path, key, v, false);
+            has_free = true;
+        } else if (key == "torque") {
+            c.torque_scenes = claim_scenes(path, key, v, true);
+            has_torque = true;
+        } else {
+            toml_error(path, v, "unknown key '" + key + "' in [claims]; valid keys: schemes, free, torque");
+        }
+    }
+    if (!has_schemes || !has_free || !has_torque) throw InputError(c.location + ": [claims] needs 'schemes', 'free' and 'torque'");
+    if (c.free_scenes.size() < 2) throw InputError(c.location + ": [claims] 'free' needs at least two torque-free scenes");
+    return c;
+}
+
+ExpectedFailure read_expected_failure(const std::string& path, const toml::table& t) {
+    ExpectedFailure e;
+    e.location = fmt::format("{}:{}", path, t.source().begin.line);
+    for (auto&& [k, v] : t) {
+        const std::string key(k.str());
+        if (key == "check") e.check = text(path, key, v);
+        else if (key == "reason") e.reason = text(path, key, v);
+        else if (key == "scene" || key == "scheme") {
+            const std::string id = text(path, key, v);
+            try {
+                if (key == "scene") SceneRegistry::instance().at(id, "scene");
+                else SchemeRegistry::instance().at(id, "scheme");
+            } catch (const InputError& error) {
+                toml_error(path, v, error.what());
+            }
+            (key == "scene" ? e.scene : e.scheme) = id;
+        } else {
+            toml_error(path, v, "unknown key '" + key + "' in [[expected_failure]]; valid keys: check, scene, scheme, reason");
+        }
+    }
+    if (e.check.empty() || e.scene.empty() || e.scheme.empty() || e.reason.empty())
+        throw InputError(e.location + ": an [[expected_failure]] needs 'check', 'scene', 'scheme' and a 'reason'");
+    return e;
+}
+
+GateFile gate_from_toml(const toml::table& root, const std::string& path) {
+    GateFile file;
+    file.path = path;
+    for (auto&& [name, node] : root) {
+        const std::string key(name.str());
+        if (key == "claims" && node.as_table()) {
+            file.claims = read_claims(path, *node.as_table());
+            continue;
+        }
+        const auto* array = node.as_array();
+        if ((key != "check" && key != "expected_failure") || !array || !array->is_array_of_tables())
+            toml_error(path, node, "unknown entry '" + key + "'; a gate file holds [claims], [[check]] and [[expected_failure]] tables");
+        for (const auto& item : *array) {
+            if (key == "check") file.checks.push_back(read_check(path, *item.as_table(), file.checks.size()));
+            else file.expected_failures.push_back(read_expected_failure(path, *item.as_table()));
+        }
+    }
+    if (file.checks.empty() && !file.claims.present) throw InputError(path + ": no [claims] and no [[check]] in the gate file");
+    for (const auto& e : file.expected_failures) {
+        const bool is_claim = std::find(claim_ids().begin(), claim_ids().end(), e.check) != claim_ids().end();
+        const auto check = std::find_if(file.checks.begin(), file.checks.end(), [&](const GateCheck& c) { return c.name == e.check; });
+        if (!is_claim && check == file.checks.end())
+            throw InputError(e.location + ": expected failure of '" + e.check + "', which is neither a check of this file nor a claim (" +
+                             join(claim_ids(), ", ") + ")");
+        if (!is_claim && (check->scene != e.scene ||
+                          std::find(check->schemes.begin(), check->schemes.end(), e.scheme) == check->schemes.end()))
+            throw InputError(e.location + ": check '" + e.check + "' does not run " + e.scheme + " on " + e.scene);
+    }
+    return file;
+}
+
+}  // namespace
+
+const std::vector<std::string>& claim_ids() {
+    static const std::vector<std::string> ids = {"order_without_torque", "order_with_torque", "exact_without_torque",
+                                                 "conserves_momentum",   "bounded_energy",    "time_reversible",
+                                                 "sanity_order",         "sanity_momentum"};
+    return ids;
+}
+
+GateFile load_gate(const std::string& path) { return gate_from_toml(parse_toml_file(path), path); }
+
+GateFile parse_gate(std::string_view text, const std::string& name) { return gate_from_toml(parse_toml_text(text, name), name); }
+
+}  // namespace rotbench

@@ -1,0 +1,72 @@
+// Gate files (docs/gate.md): the claims section, checks, and expected failures.
+//
+//   [claims]                       # every scheme held to what it registers (SchemeClaims)
+//   schemes = ["*"]                # "*": every registered scheme, plug-ins and controls included
+//   free    = ["asymmetric_free", "tumbling_brick"]   # torque-free scenes with a reference
+//   torque  = ["dipole_top"]       # scenes with an orientation-dependent torque
+//
+//   [[check]]                      # one criterion on one scene for a list of schemes
+//   name      = "..."              # optional; the check's id in summaries and expected failures
+//   scene     = "asymmetric_free"
+//   schemes   = ["*"]              # "*": every registered sound scheme
+//   min_order = 0.8                # or max_error, max_energy_drift, max_momentum_drift,
+//                                  # min_stability, max_cost_ratio
+//   metric, dt, t_end, params, round_off, why   (optional)
+//
+//   [[expected_failure]]           # one check on one (scene, scheme) that is expected to fail
+//   check  = "..."                 # a [[check]]'s name or a claim id (order_without_torque, ...)
+//   scene  = "..."
+//   scheme = "..."
+//   reason = "..."
+#pragma once
+
+#include "harness/scenes/params.hpp"
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace rotbench {
+
+struct GateCheck {
+    std::string name;
+    std::string scene;
+    std::vector<std::string> schemes;
+    std::string criterion;  // min_order, max_error, max_energy_drift, max_momentum_drift, min_stability, max_cost_ratio
+    double bound = 0;
+    std::string metric;       // the metric the criterion reads
+    std::vector<double> dts;  // empty: the scene's ladder (min_order)
+    double t_end = 0;
+    double round_off = 1e-10;
+    ParamOverrides params;
+    std::string why;
+    std::string location;  // file:line of the [[check]]
+};
+
+struct ClaimsSection {
+    bool present = false;
+    std::vector<std::string> schemes;
+    std::vector<std::string> free_scenes, torque_scenes;
+    std::string location;
+};
+
+struct ExpectedFailure {
+    std::string check, scene, scheme, reason, location;
+};
+
+struct GateFile {
+    std::string path;
+    ClaimsSection claims;
+    std::vector<GateCheck> checks;
+    std::vector<ExpectedFailure> expected_failures;
+};
+
+// The claim checks a [claims] section makes, by id (what an [[expected_failure]] may name).
+const std::vector<std::string>& claim_ids();
+
+// Reads and checks a gate file; every error names file, line and column (InputError).
+GateFile load_gate(const std::string& path);
+// The same for text already read; `name` stands for the file in messages.
+GateFile parse_gate(std::string_view text, const std::string& name);
+
+}  // namespace rotbench

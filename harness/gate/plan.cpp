@@ -1,0 +1,146 @@
+// The plan of a gate: every case (a claim or check of one scheme on one scene) and the runs it
+// reads, each distinct run once.
+#include "harness/gate/gate.hpp"
+
+#include "harness/scenes/scene.hpp"
+#include "schemes/scheme.hpp"
+
+#include <algorithm>
+#include <fmt/format.h>
+#include <map>
+#include <tuple>
+
+namespace rotbench {
+namespace {
+
+class Planner {
+public:
+    explicit Planner(const GateFile& file) : file_(file) {}
+
+    std::size_t run(RunSpec spec) {
+        const auto key = std::make_tuple(spec.scene, spec.scheme, static_cast<int>(spec.kind), spec.dt, spec.t_end, spec.params,
+                                         spec.timed);
+        const auto [it, fresh] = index_.try_emplace(key, plan_.runs.size());
+        if (fresh) plan_.runs.push_back(std::move(spec));
+        return it->second;
+    }
+
+    std::vector<std::size_t> ladder(const std::string& scene, const std::string& scheme, const std::vector<double>& dts,
+                                    double t_end = 0.0, const ParamOverrides& params = {}) {
+        std::vector<std::size_t> runs;
+        for (double dt : dts) runs.push_back(run({scene, scheme, dt, t_end, params, RunKind::trajectory, false}));
+        return runs;
+    }
+
+    void add(GateCase c) {
+        const SchemeClaims& claims = SchemeRegistry::instance().at(c.scheme, "scheme").extra;
+        if (!claims.sound) {
+            c.expected_to_fail = true;
+            c.expected_reason = c.scheme + " is a control (sound = false): a scheme known to be wrong";
+        }
+        for (const auto& e : file_.expected_failures)
+            if (e.check == c.id && e.scene == c.scene && e.scheme == c.scheme) {
+                c.expected_to_fail = true;
+                c.expected_reason = e.reason + " (" + e.location + ")";
+            }
+        plan_.cases.push_back(std::move(c));
+    }
+
+    void claims() {
+        const ClaimsSection& section = file_.claims;
+        if (!section.present) return;
+        for (const auto& scheme : section.schemes) {
+            const SchemeClaims& c = SchemeRegistry::instance().at(scheme, "scheme").extra;
+            const auto claim = [&](const std::string& id, const std::string& scene, std::vector<std::size_t> runs, int order = 0) {
+                add({id, "claim", id, scene, scheme, std::move(runs), std::numeric_limits<std::size_t>::max(), order, section.location});
+            };
+            if (c.claims_nothing()) {
+                if (c.sound)
+                    plan_.warnings.push_back(scheme + " registers no claims (SchemeClaims): it is held to the generic sanity "
+                                                      "checks only (order at least 0.8, angular momentum within 5 %)");
+                for (const auto& scene : section.free_scenes) {
+                    const auto runs = ladder(scene, scheme, dts(scene));
+                    add({"sanity_order", "sanity", "sanity_order", scene, scheme, runs, std::numeric_limits<std::size_t>::max(), 0,
+                         section.location});
+                    add({"sanity_momentum", "sanity", "sanity_momentum", scene, scheme, {runs.back()},
+                         std::numeric_limits<std::size_t>::max(), 0, section.location});
+                }
+                for (const auto& scene : section.torque_scenes)
+                    add({"sanity_order", "sanity", "sanity_order", scene, scheme, ladder(scene, scheme, dts(scene)),
+                         std::numeric_limits<std::size_t>::max(), 0, section.location});
+                continue;
+            }
+            for (const auto& scene : section.free_scenes) {
+                const auto runs = ladder(scene, scheme, dts(scene));
+                if (c.without_torque.order > 0) claim("order_without_torque", scene, runs, c.without_torque.order);
+                if (c.exact_without_torque) claim("exact_without_torque", scene, runs);
+                if (c.conserves_momentum) claim("conserves_momentum", scene, runs);
+                if (c.time_reversible) claim("time_reversible", scene, {reversal(scene, scheme)});
+            }
+            for (const auto& scene : section.torque_scenes) {
+                if (c.with_torque.order > 0) claim("order_with_torque", scene, ladder(scene, scheme, dts(scene)), c.with_torque.order);
+                if (c.bounded_energy) {
+                    // The coarsest step of the ladder, over the scene's duration and eight times it.
+                    const double dt = dts(scene).front(), t_end = make_scene(scene)->t_end();
+                    claim("bounded_energy", scene,
+                          {run({scene, scheme, dt, t_end, {}, RunKind::trajectory, false}),
+                           run({scene, scheme, dt, 8.0 * t_end, {}, RunKind::trajectory, false})});
+                }
+                if (c.time_reversible) claim("time_reversible", scene, {reversal(scene, scheme)});
+            }
+        }
+    }
+
+    void checks() {
+        for (std::size_t i = 0; i < file_.checks.size(); ++i) {
+            const GateCheck& c = file_.checks[i];
+            for (const auto& scheme : c.schemes) {
+                std::vector<std::size_t> runs;
+                if (c.criterion == "min_order") {
+                    runs = ladder(c.scene, scheme, c.dts.empty() ? make_scene(c.scene, c.params)->default_dts() : c.dts, c.t_end, c.params);
+                } else if (c.criterion == "min_stability") {
+                    runs = {run({c.scene, scheme, 0.0, c.t_end, c.params, RunKind::stability, false})};
+                } else if (c.criterion == "max_cost_ratio") {
+                    runs = {run({c.scene, scheme, c.dts[0], c.t_end, c.params, RunKind::trajectory, true}),
+                            run({c.scene, "direct", c.dts[0], c.t_end, c.params, RunKind::trajectory, true})};
+                } else {
+                    runs = {run({c.scene, scheme, c.dts[0], c.t_end, c.params, RunKind::trajectory, false})};
+                }
+                add({c.name, "check", c.criterion, c.scene, scheme, runs, i, 0, c.location});
+            }
+        }
+    }
+
+    GatePlan take() {
+        for (const auto& e : file_.expected_failures) {
+            const bool used = std::any_of(plan_.cases.begin(), plan_.cases.end(), [&](const GateCase& c) {
+                return c.id == e.check && c.scene == e.scene && c.scheme == e.scheme;
+            });
+            if (!used)
+                throw InputError(e.location + ": the expected failure of '" + e.check + "' for " + e.scheme + " on " + e.scene +
+                                 " matches no check the gate makes");
+        }
+        return std::move(plan_);
+    }
+
+private:
+    std::vector<double> dts(const std::string& scene) { return make_scene(scene)->default_dts(); }
+    std::size_t reversal(const std::string& scene, const std::string& scheme) {
+        return run({scene, scheme, dts(scene).front(), 0.0, {}, RunKind::reversal, false});
+    }
+
+    const GateFile& file_;
+    GatePlan plan_;
+    std::map<std::tuple<std::string, std::string, int, double, double, ParamOverrides, bool>, std::size_t> index_;
+};
+
+}  // namespace
+
+GatePlan plan_gate(const GateFile& file) {
+    Planner planner(file);
+    planner.claims();
+    planner.checks();
+    return planner.take();
+}
+
+}  // namespace rotbench
