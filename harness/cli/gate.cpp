@@ -5,6 +5,7 @@
 #include "harness/cli/sweep_command.hpp"
 #include "harness/cli/verb.hpp"
 #include "harness/engine/parallel.hpp"
+#include "harness/gate/compare.hpp"
 #include "harness/gate/gate.hpp"
 #include "harness/io/journal.hpp"
 #include "harness/io/output_files.hpp"
@@ -50,6 +51,7 @@ public:
         command.add_option("--summary", summary_, "write the Markdown summary here (also appended to $GITHUB_STEP_SUMMARY)");
         command.add_option("--out", out_, "write gate.csv, summary.json and the runs' results.csv and runs.csv here (and the journal)");
         command.add_option("--results", results_, "DIR: judge the runs in DIR (e.g. merged shards) instead of running them");
+        command.add_option("--baseline", baseline_, "DIR: also fail on regressions against the runs in DIR (as rotbench compare)");
         command.add_option("--shard", shard_, "K/N: run only the K-th of N slices of the gate's runs (judge the merge with --results)");
         command.add_option("--jobs", jobs_, "runs in parallel (results do not depend on it)")->check(CLI::Range(1, max_jobs));
         command.add_flag("--overwrite", overwrite_, "replace a gate.csv already in --out");
@@ -67,6 +69,7 @@ public:
         if (how.resuming) dir = *how.resuming;
         else if (!out_.empty()) dir = prepare_output(out_, "gate.csv", overwrite_);
 
+        const std::vector<RunResult> baseline = baseline_.empty() ? std::vector<RunResult>{} : read_results(baseline_);
         std::vector<RunResult> runs;
         if (!results_.empty()) {
             runs = read_results(results_);
@@ -88,7 +91,12 @@ public:
             runs = outcome.results;
         }
 
-        const GateResult result = judge_gate(file, plan, std::move(runs));
+        GateResult result = judge_gate(file, plan, std::move(runs));
+        if (!baseline_.empty()) {
+            const Comparison c = compare_runs(baseline, result.runs, {}, baseline_);
+            result.verdicts.insert(result.verdicts.end(), c.verdicts.begin(), c.verdicts.end());
+            result.warnings.insert(result.warnings.end(), c.notes.begin(), c.notes.end());
+        }
         how.out << gate_summary(result);
         if (std::getenv("GITHUB_ACTIONS") && std::string(std::getenv("GITHUB_ACTIONS")) == "true") how.out << gate_annotations(result);
         const std::string json = gate_summary_json(result, file_, provenance());
@@ -110,7 +118,7 @@ public:
     }
 
 private:
-    std::string file_, junit_, summary_, out_, results_, shard_;
+    std::string file_, junit_, summary_, out_, results_, shard_, baseline_;
     int jobs_ = core_count();
     bool overwrite_ = false;
 };

@@ -1,0 +1,61 @@
+// `rotbench compare BASE NEW`: every metric of the runs found in both directories, and the
+// regressions among them (harness/gate/compare.hpp); exit 1 if there is one.
+#include "harness/cli/outputs.hpp"
+#include "harness/cli/verb.hpp"
+#include "harness/gate/compare.hpp"
+#include "harness/io/output_files.hpp"
+#include "harness/io/parse.hpp"
+#include "harness/io/results_csv.hpp"
+#include "reports/gate_report.hpp"
+
+namespace rotbench {
+namespace {
+
+namespace fs = std::filesystem;
+
+class CompareVerb final : public Verb {
+public:
+    void add_options(CLI::App& command) override {
+        command.add_option("BASE", base_, "the baseline: a directory written by run, gate --out or merge")->required();
+        command.add_option("NEW", now_, "the directory to compare with it")->required();
+        command.add_option("--out", out_, "write compare.csv (every change) and summary.json here");
+        command.add_option("--junit", junit_, "write JUnit XML here (a test case per check of each scene and scheme)");
+        command.add_option("--summary", summary_, "write the Markdown summary here");
+        command.add_option("--error-tolerance", error_, "relative error increase that is a regression")->capture_default_str();
+        command.add_option("--order-tolerance", order_, "observed-order drop that is a regression")->capture_default_str();
+        command.add_option("--cost-tolerance", cost_, "relative cost increase that is a regression, when significant")->capture_default_str();
+        command.add_flag("--overwrite", overwrite_, "replace a compare.csv already in --out");
+    }
+    int run(const Invocation& how) override {
+        CompareOptions options;
+        options.error_tolerance = parse_positive(error_, "--error-tolerance");
+        options.order_tolerance = parse_positive(order_, "--order-tolerance");
+        options.cost_tolerance = parse_positive(cost_, "--cost-tolerance");
+        for (const auto& [option, file] : {std::pair{"--junit", junit_}, std::pair{"--summary", summary_}})
+            if (const fs::path parent = fs::path(file).parent_path(); !file.empty() && !parent.empty() && !fs::is_directory(parent))
+                throw InputError(std::string(option) + " " + file + ": the directory " + parent.string() + " does not exist");
+        const fs::path dir = out_.empty() ? fs::path() : prepare_output(out_, "compare.csv", overwrite_);
+        const auto base = read_results(base_), now = read_results(now_);
+        const Comparison c = compare_runs(base, now, options, base_);
+        GateResult result;
+        result.verdicts = c.verdicts;
+        result.warnings = c.notes;
+        how.out << gate_summary(result);
+        if (!junit_.empty()) write_file_atomically(junit_, gate_junit(result, base_));
+        if (!summary_.empty()) write_file_atomically(summary_, gate_markdown(result, base_ + " -> " + now_));
+        if (!dir.empty()) {
+            write_file_atomically(dir / "compare.csv", compare_csv(c));
+            write_file_atomically(dir / "summary.json", gate_summary_json(result, base_ + " -> " + now_, provenance()));
+        }
+        return result.passed() ? 0 : 1;
+    }
+
+private:
+    std::string base_, now_, out_, junit_, summary_, error_ = "0.1", order_ = "0.1", cost_ = "0.05";
+    bool overwrite_ = false;
+};
+
+const RegisterVerb<CompareVerb> registration("compare", "regressions of NEW against BASE: accuracy, orders, stability, cost");
+
+}  // namespace
+}  // namespace rotbench

@@ -1,0 +1,187 @@
+#include "harness/gate/compare.hpp"
+
+#include "harness/analysis/mann_whitney.hpp"
+#include "harness/analysis/order_fit.hpp"
+#include "harness/analysis/orders.hpp"
+#include "harness/io/csv.hpp"
+#include "harness/io/output_files.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+#include <map>
+#include <tuple>
+
+namespace rotbench {
+namespace {
+
+// The metrics where larger is worse, and below which a change is round-off (the order fit's floor).
+const std::vector<std::string> error_metrics = {"omega_rms_x",       "omega_rms_y",        "omega_rms_z",      "omega_err_max",
+                                                "orientation_err_max", "energy_drift_max", "momentum_drift_max", "quat_norm_err_max",
+                                                "reversal_angle",    "reversal_omega"};
+
+using Key = std::tuple<std::string, std::string, int, double, double, ParamOverrides>;
+Key key_of(const RunSpec& s) { return {s.scene, s.scheme, static_cast<int>(s.kind), s.dt, s.t_end, s.params}; }
+
+std::string g(double v) { return fmt::format("{:.3g}", v); }
+
+Verdict verdict(const std::string& id, const std::string& scene, const std::string& scheme, const std::string& where) {
+    Verdict v;
+    v.of.id = v.of.criterion = id;
+    v.of.family = "baseline";
+    v.of.scene = scene;
+    v.of.scheme = scheme;
+    v.of.location = where;
+    return v;
+}
+
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    const std::size_t n = v.size();
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+}  // namespace
+
+double MetricChange::change() const { return base == now ? 0.0 : (now - base) / std::abs(base); }
+
+Comparison compare_runs(const std::vector<RunResult>& base, const std::vector<RunResult>& now, const CompareOptions& o,
+                        const std::string& where) {
+    Comparison c;
+    std::map<Key, const RunResult*> by_key;
+    for (const auto& r : base) by_key[key_of(r.spec)] = &r;
+    // Per scene and scheme, in the order of the new runs.
+    std::vector<std::pair<std::string, std::string>> pairs;
+    std::map<std::pair<std::string, std::string>, std::vector<std::pair<const RunResult*, const RunResult*>>> matched;
+    std::map<Key, bool> seen;
+    for (const auto& r : now) {
+        const auto it = by_key.find(key_of(r.spec));
+        if (it == by_key.end()) {
+            c.notes.push_back(fmt::format("{} {} {} dt={}: not in the baseline", r.spec.scene, r.spec.scheme, kind_name(r.spec.kind),
+                                          g(r.spec.dt)));
+            continue;
+        }
+        seen[it->first] = true;
+        const auto pair = std::make_pair(r.spec.scene, r.spec.scheme);
+        if (!matched.count(pair)) pairs.push_back(pair);
+        matched[pair].push_back({it->second, &r});
+        for (const auto& [metric, value] : r.metrics)
+            if (it->second->has(metric) && !is_timing_metric(metric))
+                c.changes.push_back({r.spec, metric, it->second->value(metric), value});
+    }
+    for (const auto& r : base)
+        if (!seen.count(key_of(r.spec)))
+            c.notes.push_back(fmt::format("{} {} {} dt={}: in the baseline only", r.spec.scene, r.spec.scheme, kind_name(r.spec.kind),
+                                          g(r.spec.dt)));
+
+    for (const auto& pair : pairs) {
+        const auto& runs = matched[pair];
+        const auto& [scene, scheme] = pair;
+        // Accuracy: the worst relative increase of an error, above round-off.
+        Verdict acc = verdict("baseline_accuracy", scene, scheme, where);
+        acc.bound = o.error_tolerance;
+        acc.measured = 0;
+        std::string worst = "no error grew";
+        for (const auto& [b, n] : runs)
+            for (const auto& m : error_metrics) {
+                if (!b->has(m) || !n->has(m)) continue;
+                const double before = b->value(m), after = n->value(m);
+                if (!std::isfinite(before) || !(after > order_floor)) continue;  // round-off, or compared as stability
+                const double change = before > 0 ? (after - before) / before : INFINITY;
+                if (change > acc.measured) {
+                    acc.measured = change;
+                    worst = fmt::format("{} at dt = {} went from {} to {} ({:+.1f} %)", m, g(n->spec.dt), g(before), g(after), 100 * change);
+                }
+            }
+        acc.passed = acc.measured <= o.error_tolerance;
+        acc.message = fmt::format("baseline_accuracy on {}: {}; a regression is an error up by more than {:g} %", scene, worst,
+                                  100 * o.error_tolerance);
+        // Stability: a run that became unstable, or a stability limit that fell.
+        Verdict stab = verdict("baseline_stability", scene, scheme, where);
+        stab.passed = true;
+        stab.message = fmt::format("baseline_stability on {}: no run became unstable", scene);
+        for (const auto& [b, n] : runs) {
+            if (b->value("unstable") == 0.0 && n->value("unstable") == 1.0) {
+                stab.passed = false;
+                stab.message = fmt::format("baseline_stability on {}: the run at dt = {} is unstable now ({})", scene, g(n->spec.dt),
+                                           n->failure);
+                break;
+            }
+            const double lb = b->value("dt_empirical"), ln = n->value("dt_empirical");
+            if (std::isfinite(lb) && ln < lb * (1.0 - o.error_tolerance)) {
+                stab.passed = false;
+                stab.measured = ln / lb - 1.0;
+                stab.message = fmt::format("baseline_stability on {}: the stability limit fell from {} s to {} s", scene, g(lb), g(ln));
+                break;
+            }
+        }
+        // Orders: observed on the same ladders, the worst drop.
+        std::vector<RunResult> ladder_base, ladder_now;
+        for (const auto& [b, n] : runs)
+            if (n->spec.kind == RunKind::trajectory) ladder_base.push_back(*b), ladder_now.push_back(*n);
+        Verdict ord = verdict("baseline_order", scene, scheme, where);
+        ord.bound = o.order_tolerance;
+        ord.measured = 0;
+        ord.passed = true;
+        std::string order_text = "no observed order fell";
+        const auto fits_base = observed_orders(ladder_base), fits_now = observed_orders(ladder_now);
+        for (const auto& fb : fits_base)
+            for (const auto& fn : fits_now) {
+                if (fb.metric != fn.metric || !fb.fit.sufficient) continue;
+                if (!fn.fit.sufficient) {
+                    ord.passed = false;
+                    order_text = fmt::format("the order of {} was {:.2f} and is not measurable now", fb.metric, fb.fit.order);
+                    continue;
+                }
+                const double drop = fb.fit.order - fn.fit.order;
+                if (drop > ord.measured) {
+                    ord.measured = drop;
+                    order_text = fmt::format("the order of {} fell from {:.2f} to {:.2f}", fb.metric, fb.fit.order, fn.fit.order);
+                }
+            }
+        ord.passed = ord.passed && ord.measured <= o.order_tolerance;
+        ord.message = fmt::format("baseline_order on {}: {}; a regression is an order down by more than {:g}", scene, order_text,
+                                  o.order_tolerance);
+        // Cost: the timing repeats per step, pooled over the runs, tested before they are compared.
+        std::vector<double> cost_base, cost_now;
+        for (const auto& [b, n] : runs) {
+            for (double s : b->timing_samples) cost_base.push_back(s / b->value("steps"));
+            for (double s : n->timing_samples) cost_now.push_back(s / n->value("steps"));
+        }
+        Verdict cost = verdict("baseline_cost", scene, scheme, where);
+        cost.bound = o.cost_tolerance;
+        const UTest test = mann_whitney(cost_base, cost_now);
+        if (cost_base.empty() && cost_now.empty()) {
+            cost.passed = true;
+            cost.message = fmt::format("baseline_cost on {}: not timed", scene);
+        } else if (!test.valid) {
+            cost.passed = true;
+            cost.message = fmt::format("baseline_cost on {}: not tested ({} and {} timing repeats; the test needs 5 of each)", scene,
+                                       cost_base.size(), cost_now.size());
+            c.notes.push_back(cost.message);
+        } else {
+            const double ratio = median(cost_now) / median(cost_base);
+            cost.measured = ratio - 1.0;
+            cost.passed = !(test.p < o.significance && ratio > 1.0 + o.cost_tolerance);
+            cost.message = fmt::format("baseline_cost on {}: median cost per step {:+.1f} % ({} repeats against {}), Mann-Whitney "
+                                       "p = {:.3g}; a regression is more than {:g} % and p < {:g}",
+                                       scene, 100 * (ratio - 1.0), cost_now.size(), cost_base.size(), test.p, 100 * o.cost_tolerance,
+                                       o.significance);
+        }
+        for (Verdict* v : {&acc, &ord, &stab, &cost}) {
+            v->message = scheme + ": " + v->message;
+            c.verdicts.push_back(*v);
+        }
+    }
+    return c;
+}
+
+std::string compare_csv(const Comparison& c) {
+    std::string out = "scene,scheme,kind,dt,metric,base,new,change\n";
+    for (const auto& m : c.changes)
+        out += csv_record({m.spec.scene, m.spec.scheme, kind_name(m.spec.kind), format_number(m.spec.dt), m.metric,
+                           format_number(m.base), format_number(m.now), format_number(m.change())});
+    return out;
+}
+
+}  // namespace rotbench

@@ -1,0 +1,151 @@
+// Baselines (`rotbench compare`, `gate --baseline`): an identical rerun passes, a degraded
+// error, a lost order, a run newly unstable or a significant slow-down fails.
+#include "harness/analysis/mann_whitney.hpp"
+#include "harness/gate/compare.hpp"
+#include "harness/io/csv.hpp"
+#include "tests/cli_helpers.hpp"
+
+#include <catch2/catch.hpp>
+#include <random>
+
+using namespace rotbench;
+using namespace rotbench::test;
+
+namespace {
+
+const Verdict& find(const Comparison& c, const std::string& id) {
+    for (const auto& v : c.verdicts)
+        if (v.of.id == id) return v;
+    FAIL("no verdict " << id);
+    return c.verdicts.front();
+}
+
+std::vector<RunResult> ladder(const std::string& scheme) {
+    std::vector<RunResult> runs;
+    for (double dt : {0.02, 0.01, 0.005, 0.0025}) runs.push_back(run_one({"dipole_top", scheme, dt, 2.0}, {.measure_time = false}));
+    return runs;
+}
+
+}  // namespace
+
+TEST_CASE("Mann-Whitney U: the normal approximation with tie and continuity corrections") {
+    // Separated samples of 5: U = 0; mean 12.5, variance 25/12 x 11 = 22.917; z = (12.5 - 0.5) / 4.787 =
+    // 2.5067; two-sided p = 2 Q(2.5067) = 0.012186.
+    const UTest t = mann_whitney({1, 2, 3, 4, 5}, {6, 7, 8, 9, 10});
+    CHECK(t.valid);
+    CHECK(t.u == 0);
+    CHECK(t.p == Approx(0.012186).epsilon(1e-4));
+    // With ties: ranks of the first sample 1, 3, 3, 6, 6, so U = 19 - 15 = 4; tie term 24 + 24 + 6 = 54,
+    // variance 25/12 x (11 - 54/90) = 21.667; z = (8.5 - 0.5) / 4.6547 = 1.7187; p = 2 Q(1.7187) = 0.08567.
+    const UTest ties = mann_whitney({1, 2, 2, 3, 3}, {2, 3, 4, 4, 5});
+    CHECK(ties.u == 4);
+    CHECK(ties.p == Approx(0.08567).epsilon(1e-3));
+    CHECK_FALSE(mann_whitney({1, 2, 3}, {4, 5, 6}).valid);  // too few to test
+}
+
+TEST_CASE("compare: an identical rerun passes, a degraded error and a lost order fail") {
+    const auto base = ladder("no_squish");
+    const Comparison same = compare_runs(base, ladder("no_squish"), {}, "base");
+    for (const auto& v : same.verdicts) {
+        INFO(v.message);
+        CHECK(v.passed);
+    }
+    auto worse = base;
+    for (auto& [name, value] : worse[2].metrics)
+        if (name == "omega_err_max") value *= 1.2;
+    const Verdict& acc = find(compare_runs(base, worse, {}, "base"), "baseline_accuracy");
+    CHECK_FALSE(acc.passed);
+    CHECK_THAT(acc.message, Catch::Contains("omega_err_max at dt = 0.005") && Catch::Contains("+20.0 %"));
+    auto within = base;
+    for (auto& [name, value] : within[2].metrics)
+        if (name == "omega_err_max") value *= 1.05;
+    CHECK(find(compare_runs(base, within, {}, "base"), "baseline_accuracy").passed);
+    // A first-order scheme in place of a second-order one: the order falls by one.
+    auto first_order = ladder("zvw");
+    for (auto& r : first_order) r.spec.scheme = "no_squish";
+    const Verdict& ord = find(compare_runs(base, first_order, {}, "base"), "baseline_order");
+    CHECK_FALSE(ord.passed);
+    CHECK_THAT(ord.message, Catch::Contains("fell from 2.00 to 1.00"));
+}
+
+TEST_CASE("compare: a run newly unstable fails") {
+    const auto base = ladder("direct");
+    auto now = base;
+    for (auto& [name, value] : now[0].metrics)
+        if (name == "unstable") value = 1.0;
+    now[0].failure = "blew up at step 3 (t = 0.06 s)";
+    const Verdict& v = find(compare_runs(base, now, {}, "base"), "baseline_stability");
+    CHECK_FALSE(v.passed);
+    CHECK_THAT(v.message, Catch::Contains("unstable now (blew up at step 3"));
+}
+
+TEST_CASE("compare: a cost regression counts only when it is large and significant against the timing repeats") {
+    std::mt19937_64 rng(7);
+    std::normal_distribution<double> noise(1.0, 0.02);
+    const auto timed = [&](double factor, int repeats) {
+        auto runs = ladder("direct");
+        for (auto& r : runs) {
+            r.timing_samples.clear();
+            for (int k = 0; k < repeats; ++k) r.timing_samples.push_back(factor * noise(rng) * r.value("steps") * 1e-7);
+        }
+        return runs;
+    };
+    const auto base = timed(1.0, 3);
+    CHECK_FALSE(find(compare_runs(base, timed(1.2, 3), {}, "base"), "baseline_cost").passed);  // 12 repeats each: +20 %
+    CHECK(find(compare_runs(base, timed(1.02, 3), {}, "base"), "baseline_cost").passed);       // +2 %: within 5 %
+    CHECK(find(compare_runs(base, timed(1.0, 3), {}, "base"), "baseline_cost").passed);        // the same
+    const auto thin = [&](double factor) {
+        auto runs = timed(factor, 1);
+        runs.resize(2);
+        return runs;
+    };
+    const Verdict& untested = find(compare_runs(thin(1.0), thin(1.5), {}, "base"), "baseline_cost");
+    CHECK(untested.passed);  // 2 repeats each: nothing to test
+    CHECK_THAT(untested.message, Catch::Contains("not tested"));
+}
+
+TEST_CASE("rotbench compare: exit 0 on an identical rerun, 1 on a degraded one, with CSV and JUnit") {
+    const fs::path dir = fresh_dir("compare");
+    const std::vector<std::string> sweep = {"run", "--scenes", "dipole_top", "--schemes", "direct,zvw", "--quick", "--energy-series", "0"};
+    auto into = [&](const std::string& name) {
+        std::vector<std::string> args = sweep;
+        args.insert(args.end(), {"--out", (dir / name).string()});
+        return cli(args).status;
+    };
+    REQUIRE(into("a") == 0);
+    REQUIRE(into("b") == 0);
+    fs::create_directories(dir / "reports");
+    const Cli same = cli({"compare", (dir / "a").string(), (dir / "b").string(), "--out", (dir / "cmp").string(), "--junit",
+                          (dir / "reports" / "compare.xml").string()});
+    INFO(same.out);
+    CHECK(same.status == 0);
+    CHECK_THAT(read(dir / "cmp" / "compare.csv"), Catch::StartsWith("scene,scheme,kind,dt,metric,base,new,change\n"));
+    CHECK_THAT(read(dir / "reports" / "compare.xml"), Catch::Contains("baseline_accuracy on dipole_top"));
+    // Degrade one error of b by half: a regression, named.
+    const std::string results = read(dir / "b" / "results.csv");
+    std::string degraded;
+    for (const auto& row : parse_csv(results, "b")) {
+        auto f = row.fields;
+        if (f[1] == "zvw" && f[2] == "0.005" && f[3] == "omega_err_max") f[4] = std::to_string(1.5 * std::stod(f[4]));
+        degraded += csv_record(f);
+    }
+    write(dir / "b" / "results.csv", degraded);
+    const Cli worse = cli({"compare", (dir / "a").string(), (dir / "b").string()});
+    CHECK(worse.status == 1);
+    CHECK_THAT(worse.out, Catch::Contains("FAIL dipole_top/zvw: zvw: baseline_accuracy on dipole_top: omega_err_max at dt = 0.005"));
+    CHECK(cli({"compare", (dir / "a").string(), (dir / "absent").string()}).status == 2);
+    fs::remove_all(dir);
+}
+
+TEST_CASE("gate --baseline: the same gate against its own earlier run passes") {
+    const fs::path dir = fresh_dir("gate_baseline");
+    fs::create_directories(dir);
+    write(dir / "g.toml", "[[check]]\nscene = \"dipole_top\"\nschemes = [\"direct\", \"zvw\"]\nmin_order = 0.8\n"
+                          "dt = [0.02, 0.01, 0.005]\n");
+    REQUIRE(cli({"gate", (dir / "g.toml").string(), "--out", (dir / "first").string()}).status == 0);
+    const Cli again = cli({"gate", (dir / "g.toml").string(), "--baseline", (dir / "first").string()});
+    INFO(again.out);
+    CHECK(again.status == 0);
+    CHECK_THAT(again.out, Catch::Contains("PASS dipole_top/zvw: zvw: baseline_order on dipole_top"));
+    fs::remove_all(dir);
+}
