@@ -16,7 +16,7 @@ std::string plotted_error(const std::vector<const RunResult*>& runs) {
 }
 
 std::string convergence_plots(const std::string& scene, std::size_t body_count, const std::vector<const RunResult*>& runs,
-                              const std::filesystem::path& dir, const std::map<std::string, double>& instructions) {
+                              const OutputDir& dir, const std::map<std::string, double>& instructions) {
     const std::string metric = plotted_error(runs);
     std::vector<std::string> schemes;
     for (const RunResult* r : runs)
@@ -56,8 +56,7 @@ std::string convergence_plots(const std::string& scene, std::size_t body_count, 
             dt_mid = r->spec.dt;
             e_mid = r->value(metric);
         }
-    std::filesystem::create_directories(dir / "plots");
-    write_file_atomically(dir / "plots" / fmt::format("runs_{}.dat", scene), data);
+    dir.write(fmt::format("plots/runs_{}.dat", scene), data);
 
     const std::string names = fmt::format("{}", fmt::join(schemes, " "));
     std::vector<std::string> titles;  // with the instruction ratio to direct, where counted
@@ -69,7 +68,7 @@ std::string convergence_plots(const std::string& scene, std::size_t body_count, 
         "names = '{}'\ntitles = '{}'\nfile = 'runs_{}.dat'\n",
         counted ? "1200,480" : "800,480", names, fmt::join(titles, " "), scene);
     const std::string conv = head + fmt::format(
-        "set output 'convergence_{0}.svg'\nset title '{0}: {1} against dt'\nset xlabel 'dt (s)'\nset ylabel '{1}'\n"
+        "{8}set title '{0}: {1} against dt'\nset xlabel 'dt (s)'\nset ylabel '{1}'\n"
         "e0 = {2}; d0 = {3}; lo = {4}; hi = {5}\n"
         "slope(x, p) = (x >= lo && x <= hi) ? e0*(x/d0)**p : 1/0  # drawn over the data's dt only\n"
         "set xrange [lo/1.5:hi*1.5]\nset yrange [{6}/3:{7}*3]\nset samples 200\n"
@@ -77,23 +76,26 @@ std::string convergence_plots(const std::string& scene, std::size_t body_count, 
         "     slope(x, 1) dt 2 lc 'gray50' title 'slope 1', slope(x, 2) dt 3 lc 'gray30' title 'slope 2', \\\n"
         "     slope(x, 4) dt 4 lc 'gray10' title 'slope 4'\n",
         scene, metric, format_number(e_mid), format_number(dt_mid), format_number(lo), format_number(hi),
-        format_number(e_lo), format_number(e_hi));
+        format_number(e_lo), format_number(e_hi), gnuplot_output(fmt::format("convergence_{}.svg", scene)));
     const std::string line = "with linespoints pt (7 - 2*((i-1)/8)) dt 1+(i-1)/8 ps 0.6 title word(titles, i)\n";
     std::string work = head + fmt::format(
-        "set output 'work_precision_{0}.svg'\nset multiplot layout 1,{2} title '{0}: {1} against cost{3}'\n"
+        "{6}set multiplot layout 1,{2} title '{0}: {1} against cost{3}'\n"
         "set xlabel 'CPU time (s)'\nset ylabel '{1}'\nunset key\n"
         "plot for [i=1:words(names)] file index (i-1) using 3:2 {4}"
         "set xlabel 'force evaluations'\n{5}"
         "plot for [i=1:words(names)] file index (i-1) using 4:2 {4}",
         scene, metric, counted ? 3 : 2, counted ? " (legend: instructions per body-step / direct)" : "", line,
-        counted ? "" : "set key outside right\n");
+        counted ? "" : "set key outside right\n", gnuplot_output(fmt::format("work_precision_{}.svg", scene)));
     if (counted)
         work += "set xlabel 'scheme instructions (callgrind)'\nset key outside right\n"
                 "plot for [i=1:words(names)] file index (i-1) using 5:2 " + line;
     work += "unset multiplot\n";
-    const bool drawn = draw_with_gnuplot(dir / "plots" / fmt::format("convergence_{}.gp", scene), conv) &&
-                       draw_with_gnuplot(dir / "plots" / fmt::format("work_precision_{}.gp", scene), work);
-    if (!drawn) return fmt::format("(plots not drawn: gnuplot is not installed; scripts in `plots/`)\n\n");
+    const Drawn convergence = draw_with_gnuplot(dir, fmt::format("plots/convergence_{}.gp", scene), conv,
+                                                fmt::format("plots/convergence_{}.svg", scene));
+    const Drawn work_precision = draw_with_gnuplot(dir, fmt::format("plots/work_precision_{}.gp", scene), work,
+                                                   fmt::format("plots/work_precision_{}.svg", scene));
+    if (!convergence.ok || !work_precision.ok)
+        return fmt::format("(plots not drawn: {}; scripts in `plots/`)\n\n", convergence.ok ? work_precision.why : convergence.why);
     return fmt::format("![convergence, {0}](plots/convergence_{0}.svg)\n\n![work-precision, {0}](plots/work_precision_{0}.svg)\n\n",
                        scene);
 }

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "harness/engine/run.hpp"
+#include "harness/io/output_dir.hpp"
 
 #include <filesystem>
 #include <map>
@@ -20,6 +21,6 @@ std::string plotted_error(const std::vector<const RunResult*>& runs);
 // SVGs; returns the Markdown that shows them. `instructions`: per body-step, by scheme
 // (reports/cost_table.hpp); empty, or missing a scheme, leaves that panel out.
 std::string convergence_plots(const std::string& scene, std::size_t bodies, const std::vector<const RunResult*>& runs,
-                              const std::filesystem::path& dir, const std::map<std::string, double>& instructions = {});
+                              const OutputDir& dir, const std::map<std::string, double>& instructions = {});
 
 }  // namespace rotbench

@@ -17,12 +17,12 @@ namespace {
 std::string plot_script(const std::string& scene, double dt, const std::vector<const RunResult*>& runs) {
     std::string s = fmt::format(
         "set terminal svg size 800,450 dynamic noenhanced font 'sans,12'\n"
-        "set output 'energy_{}_dt{}.svg'\n"
+        "{}"
         "set datafile separator ','\n"
         "set title 'Relative energy error, {}, dt = {:g} s'\n"
         "set xlabel 't (s)'\nset ylabel '(E - E0) / |E0|'\nset key outside right\nset grid\n"
         "plot ",
-        scene, dt_tag(dt), scene, dt);
+        gnuplot_output(fmt::format("energy_{}_dt{}.svg", scene, dt_tag(dt))), scene, dt);
     for (std::size_t i = 0; i < runs.size(); ++i)
         s += fmt::format("{}'../series/{}' using 1:2 with lines lw 1.5 dt {} title '{}'", i ? ", \\\n     " : "",
                          series_file_name(*runs[i]), i / 8 + 1, runs[i]->spec.scheme);  // 8 colours, then dashes
@@ -57,7 +57,7 @@ std::string energy_slopes(const std::map<std::pair<std::string, double>, std::ve
 
 }  // namespace
 
-std::string energy_series_section(const std::vector<RunResult>& results, const std::filesystem::path& dir, const Executor& executor) {
+std::string energy_series_section(const std::vector<RunResult>& results, const OutputDir& dir, const Executor& executor) {
     // Plotted per scene: the coarsest and the finest step, and the steps of the seed's figures.
     std::map<std::string, std::pair<double, double>> range;  // scene -> (finest, coarsest)
     for (const auto& r : results)
@@ -80,8 +80,6 @@ std::string energy_series_section(const std::vector<RunResult>& results, const s
             if (plotted(r)) groups[{r.spec.scene, r.spec.dt}].push_back(&r);
         }
     if (groups.empty()) return "";
-    std::filesystem::create_directories(dir / "series");
-    std::filesystem::create_directories(dir / "plots");
 
     std::string md = "## Energy against time\n\n"
                      "Relative energy error (E - E0)/|E0| of each scheme, for every scene whose true motion conserves "
@@ -96,12 +94,12 @@ std::string energy_series_section(const std::vector<RunResult>& results, const s
         const double dt = group_list[g].first.second;
         const std::vector<const RunResult*>& runs = group_list[g].second;
         std::string& md = parts[g];
-        for (const RunResult* r : runs) write_series_file(*r, dir / "series");
-        const auto script = dir / "plots" / fmt::format("energy_{}_dt{}.gp", scene, dt_tag(dt));
-        const bool drawn = draw_with_gnuplot(script, plot_script(scene, dt, runs));
+        for (const RunResult* r : runs) write_series_file(*r, dir);
+        const std::string name = fmt::format("energy_{}_dt{}", scene, dt_tag(dt));
+        const Drawn drawn = draw_with_gnuplot(dir, "plots/" + name + ".gp", plot_script(scene, dt, runs), "plots/" + name + ".svg");
         md += fmt::format("### `{}`, dt = {:g} s\n\n", scene, dt);
-        md += drawn ? fmt::format("![energy error, {} dt = {:g}](plots/energy_{}_dt{}.svg)\n\n", scene, dt, scene, dt_tag(dt))
-                    : fmt::format("(plot not drawn: gnuplot is not installed; script `plots/{}`)\n\n", script.filename().string());
+        md += drawn.ok ? fmt::format("![energy error, {} dt = {:g}](plots/{}.svg)\n\n", scene, dt, name)
+                       : fmt::format("(plot not drawn: {}; script `plots/{}.gp`)\n\n", drawn.why, name);
 
         std::vector<const RunResult*> ranked = runs;
         std::stable_sort(ranked.begin(), ranked.end(), [](const RunResult* a, const RunResult* b) {

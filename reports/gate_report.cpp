@@ -113,10 +113,10 @@ std::string gate_csv(const GateResult& result) {
 }
 
 std::string gate_summary_json(const GateResult& result, const std::string& gate_file, const Provenance& p) {
-    using nlohmann::json;
+    using json = nlohmann::ordered_json;  // "format" first: the file says what it is
     const auto number_or_null = [](double v) { return std::isfinite(v) ? json(v) : json(nullptr); };
     json checks = json::array();
-    std::map<std::string, json> by_scheme;
+    std::map<std::string, json> by_scheme;  // filled in the order of the verdicts below
     for (const auto& v : result.verdicts) {
         checks.push_back({{"check", valid_utf8(v.of.id)},
                           {"family", v.of.family},

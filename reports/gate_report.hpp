@@ -13,6 +13,11 @@ namespace rotbench {
 // One line per verdict (PASS, FAIL, XFAIL: an expected failure, XPASS: an unexpected pass),
 // the warnings, and the counts.
 std::string gate_summary(const GateResult& result);
+
+// How each file begins: an existing file that does not is not rotbench's, and is never replaced.
+inline constexpr const char* junit_signature = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites name=\"rotbench gate\"";
+inline constexpr const char* summary_json_signature = "{\n  \"format\": \"rotbench-gate-summary";
+inline constexpr const char* markdown_signature = "## rotbench gate";
 // One test case per verdict; an expected failure is <skipped> with its reason.
 std::string gate_junit(const GateResult& result, const std::string& gate_file);
 // scene,scheme,check,family,criterion,outcome,measured,lo,hi,bound,message

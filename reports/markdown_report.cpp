@@ -142,7 +142,7 @@ void summary_section(std::string& md, const std::vector<RunResult>& results, con
 }
 
 void scene_section(std::string& md, const SceneInfo& entry, const std::vector<RunResult>& results,
-                   const std::vector<OrderRow>& orders, const std::filesystem::path& dir,
+                   const std::vector<OrderRow>& orders, const OutputDir& dir,
                    const std::map<std::string, double>& instructions, const std::vector<ExpectedOrder>& claimed) {
     const std::string& scene_id = entry.id;
     std::vector<const RunResult*> runs;
@@ -261,7 +261,7 @@ void schemes_section(std::string& md, const ResultSet& set, const std::vector<Ex
 
 }  // namespace
 
-std::string markdown_report(const ResultSet& set, const std::string& command_line, const std::filesystem::path& dir,
+std::string markdown_report(const ResultSet& set, const std::string& command_line, const OutputDir& dir,
                             const Executor& executor) {
     const std::vector<RunResult>& results = set.runs;
     std::vector<ExpectedOrder> expected;
@@ -279,8 +279,8 @@ std::string markdown_report(const ResultSet& set, const std::string& command_lin
     const auto orders = observed_orders(results);
     summary_section(md, results, orders);
     md += ranking_section(set, orders);
-    md += cost_section(dir);
-    const auto instructions = instructions_per_body_step(dir);  // the cost table, read once for every scene's plots
+    md += cost_section(dir.path());
+    const auto instructions = instructions_per_body_step(dir.path());  // the cost table, read once for every scene's plots
     // The scenes' sections on every core: most of their time is gnuplot drawing the plots,
     // one process at a time otherwise. Each section is its own string; they join in order.
     const auto scenes = unique_in_order(results, &RunSpec::scene);

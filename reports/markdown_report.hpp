@@ -3,6 +3,7 @@
 #pragma once
 
 #include "harness/analysis/result_set.hpp"
+#include "harness/io/output_dir.hpp"
 #include "reports/executor.hpp"
 
 #include <filesystem>
@@ -13,7 +14,7 @@ namespace rotbench {
 
 // Also writes the files the report links to (series, plots) under `dir`; the plots are drawn
 // through `executor`.
-std::string markdown_report(const ResultSet& set, const std::string& command_line, const std::filesystem::path& dir,
+std::string markdown_report(const ResultSet& set, const std::string& command_line, const OutputDir& dir,
                             const Executor& executor = run_serially);
 
 }  // namespace rotbench

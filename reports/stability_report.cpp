@@ -10,9 +10,8 @@
 
 namespace rotbench {
 
-std::string spectral_radius_plots(const std::vector<SpectralCurve>& curves, const std::filesystem::path& dir) {
+std::string spectral_radius_plots(const std::vector<SpectralCurve>& curves, const OutputDir& dir) {
     std::string md;
-    std::filesystem::create_directories(dir / "plots");
     std::vector<std::string> scenes;
     for (const auto& c : curves)
         if (std::find(scenes.begin(), scenes.end(), c.scene) == scenes.end()) scenes.push_back(c.scene);
@@ -26,23 +25,25 @@ std::string spectral_radius_plots(const std::vector<SpectralCurve>& curves, cons
             names += (names.empty() ? "" : " ") + c.scheme;
             dt_peng = c.dt_peng;
         }
-        write_file_atomically(dir / "plots" / fmt::format("spectral_radius_{}.dat", id), data);
+        dir.write(fmt::format("plots/spectral_radius_{}.dat", id), data);
         const std::string script = fmt::format(
-            "set terminal svg size 800,450 dynamic noenhanced font 'sans,12'\nset output 'spectral_radius_{0}.svg'\n"
+            "set terminal svg size 800,450 dynamic noenhanced font 'sans,12'\n{3}"
             "set title '{0} (undamped): spectral radius of the step map'\nset xlabel 'dt (s)'\nset ylabel 'rho - 1'\n"
             "set logscale xy\nset format y '%.0e'\nset grid\nset key outside right\nset yrange [1e-10:*]\n"
             "names = '{1}'\nfile = 'spectral_radius_{0}.dat'\n"
             "set arrow from {2},graph 0 to {2},graph 1 nohead dt 2 lc 'black'\n"
             "set label 'Peng' at {2},graph 0.95 offset 0.5,0\n"
             "plot for [i=1:words(names)] file index (i-1) using 1:($2-1) with linespoints pt (7 - 2*((i-1)/8)) dt 1+(i-1)/8 ps 0.5 title word(names, i)\n",
-            id, names, format_number(dt_peng));
-        if (draw_with_gnuplot(dir / "plots" / fmt::format("spectral_radius_{}.gp", id), script))
-            md += fmt::format("![spectral radius, {0}](plots/spectral_radius_{0}.svg)\n\n", id);
+            id, names, format_number(dt_peng), gnuplot_output(fmt::format("spectral_radius_{}.svg", id)));
+        const Drawn drawn = draw_with_gnuplot(dir, fmt::format("plots/spectral_radius_{}.gp", id), script,
+                                              fmt::format("plots/spectral_radius_{}.svg", id));
+        md += drawn.ok ? fmt::format("![spectral radius, {0}](plots/spectral_radius_{0}.svg)\n\n", id)
+                       : fmt::format("(plot not drawn: {})\n\n", drawn.why);
     }
     return md;
 }
 
-std::string stability_section(const std::vector<StabilityRow>& rows, const std::filesystem::path& dir) {
+std::string stability_section(const std::vector<StabilityRow>& rows, const OutputDir& dir) {
     std::string md = fmt::format(
         "## Stability limits\n\n"
         "For each scene (damping ratio zeta or spin rate w_max) and scheme: the largest stable dt measured (bracketing and "
@@ -73,7 +74,6 @@ std::string stability_section(const std::vector<StabilityRow>& rows, const std::
     std::map<std::string, std::vector<const StabilityRow*>> by_scene;
     for (const auto& r : rows)
         if (r.omega_max == 0) by_scene[r.scene].push_back(&r);
-    std::filesystem::create_directories(dir / "plots");
     md += "\n";
     for (const auto& [scene, list] : by_scene) {
         std::string data, names;
@@ -87,16 +87,18 @@ std::string stability_section(const std::vector<StabilityRow>& rows, const std::
                                                         format_number(r->dt_amplification), format_number(r->dt_peng));
             data += "\n\n";
         }
-        write_file_atomically(dir / "plots" / fmt::format("stability_{}.dat", scene), data);
+        dir.write(fmt::format("plots/stability_{}.dat", scene), data);
         const std::string script = fmt::format(
-            "set terminal svg size 800,450 dynamic noenhanced font 'sans,12'\nset output 'stability_{0}.svg'\n"
+            "set terminal svg size 800,450 dynamic noenhanced font 'sans,12'\n{2}"
             "set title '{0}: stability limit against damping ratio'\nset xlabel 'zeta'\nset ylabel 'dt (s)'\n"
             "set logscale y\nset grid\nset key outside right\nnames = '{1}'\nfile = 'stability_{0}.dat'\n"
             "plot for [i=1:words(names)] file index (i-1) using 1:2 with linespoints pt (7 - 2*((i-1)/8)) dt 1+(i-1)/8 title word(names, i), "
             "file index 0 using 1:4 with lines dt 2 lc 'black' title 'Peng (eq. 46)'\n",
-            scene, names);
-        if (draw_with_gnuplot(dir / "plots" / fmt::format("stability_{}.gp", scene), script))
-            md += fmt::format("![stability, {0}](plots/stability_{0}.svg)\n\n", scene);
+            scene, names, gnuplot_output(fmt::format("stability_{}.svg", scene)));
+        const Drawn drawn = draw_with_gnuplot(dir, fmt::format("plots/stability_{}.gp", scene), script,
+                                              fmt::format("plots/stability_{}.svg", scene));
+        md += drawn.ok ? fmt::format("![stability, {0}](plots/stability_{0}.svg)\n\n", scene)
+                       : fmt::format("(plot not drawn: {})\n\n", drawn.why);
     }
     return md;
 }

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "harness/analysis/stability_study.hpp"
+#include "harness/io/output_dir.hpp"
 
 #include <filesystem>
 #include <string>
@@ -11,9 +12,9 @@
 namespace rotbench {
 
 // Data, gnuplot scripts and SVGs under dir/plots, and the Markdown that shows them.
-std::string spectral_radius_plots(const std::vector<SpectralCurve>& curves, const std::filesystem::path& dir);
+std::string spectral_radius_plots(const std::vector<SpectralCurve>& curves, const OutputDir& dir);
 
 // The report section (Markdown), with plots drawn under dir/plots.
-std::string stability_section(const std::vector<StabilityRow>& rows, const std::filesystem::path& dir);
+std::string stability_section(const std::vector<StabilityRow>& rows, const OutputDir& dir);
 
 }  // namespace rotbench

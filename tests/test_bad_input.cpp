@@ -146,7 +146,7 @@ TEST_CASE("bad input: config files that are malformed, have unknown keys or wron
             {config("j.toml", "[run]\nschemes = [\"verlet\"]\n"), "j.toml:2:"},
             {config("k.toml", "[run]\ndt = 1\ndt = 2\n"), "k.toml:3:"},  // a key given twice
             {{"run", "--config", (dir / "absent.toml").string(), "--out", out}, "absent.toml: cannot read the file"},
-            {{"run", "--config", dir.string(), "--out", out}, "cannot read the file"},  // a directory
+            {{"run", "--config", dir.string(), "--out", out}, "not a regular file (a directory)"},
             {{"run", "--config", "", "--out", out}, "--config: the value is empty"},
         },
         dir / "out");
@@ -161,7 +161,7 @@ TEST_CASE("bad input: missing or unreadable input files and directories") {
     check_rows(
         {
             {{"gate", (dir / "absent.toml").string()}, "absent.toml: cannot read the file"},
-            {{"gate", dir.string()}, "cannot read the file"},
+            {{"gate", dir.string()}, "not a regular file (a directory)"},
             {{"report", (dir / "absent").string()}, "cannot read " + (dir / "absent" / "runs.csv").string()},
             {{"report", (dir / "not_results").string()}, "runs.csv:1: expected the header 'scene,scheme,kind,dt,t_end,params,metrics,timing,failure'"},
             {{"merge", (dir / "absent").string(), "--out", out}, "cannot read " + (dir / "absent" / "shard.csv").string()},
@@ -186,14 +186,28 @@ TEST_CASE("bad input: output directories that hold results, are files, or cannot
     };
     check_rows(
         {
-            {run(full), "--out " + full + " already holds results.csv; pass --overwrite"},
-            {{"stability", "--scenes", "sphere_pair", "--schemes", "direct", "--out", full}, "already holds stability.csv"},
-            {{"gate", DEFAULT_GATE, "--out", full}, "already holds gate.csv"},
+            // A directory of files rotbench did not write (no manifest): refused, and with --overwrite
+            // still none of those files is replaced.
+            {run(full), "--out " + full + " holds files rotbench did not write"},
+            {{"stability", "--scenes", "sphere_pair", "--schemes", "direct", "--out", full}, "holds files rotbench did not write"},
+            {{"gate", DEFAULT_GATE, "--out", full}, "holds files rotbench did not write"},
+            {[&] {
+                 auto args = run(full);
+                 args.push_back("--overwrite");
+                 return args;
+             }(),
+             full + "/results.csv exists and was not written by rotbench; it is never replaced"},
             {run(file), "--out " + file + ": cannot create the directory"},
             {run(under_file), "cannot create the directory"},
             {run("/proc/rotbench"), "cannot create the directory"},
-            {run("/proc"), "--out /proc: the directory is not writable"},
-            {{"stability", "--scenes", "sphere_pair", "--schemes", "direct", "--out", "/proc"}, "not writable"},
+            {run("/proc"), "--out /proc holds files rotbench did not write"},
+            {[&] {
+                 auto args = run("/proc");
+                 args.push_back("--overwrite");
+                 return args;
+             }(),
+             "--out /proc: the directory is not writable"},
+            {{"stability", "--scenes", "sphere_pair", "--schemes", "direct", "--out", "/proc", "--overwrite"}, "not writable"},
             {{"gate", DEFAULT_GATE, "--junit", (dir / "absent" / "j.xml").string()}, "--junit"},
             {{"reference", "--scene", "cylinder_free", "--out", (dir / "absent" / "r.csv").string()}, "does not exist"},
         },

@@ -58,7 +58,8 @@ TEST_CASE("the work-precision data carry the scheme instructions of each run: pe
         return r;
     };
     const RunResult a = run("direct", 1e-2, 100, 1e-3), b = run("zvw", 1e-2, 100, 1e-5);
-    convergence_plots("asymmetric_free", 1, {&a, &b}, dir, {{"direct", 600.0}, {"zvw", 900.0}});
+    const OutputDir out = OutputDir::open(dir, {"run", "", {}});
+    convergence_plots("asymmetric_free", 1, {&a, &b}, out, {{"direct", 600.0}, {"zvw", 900.0}});
     const auto data = read_file(dir / "plots" / "runs_asymmetric_free.dat");
     REQUIRE(data);
     CHECK(data->find("0.01 0.001 0.001 101 60000\n") != std::string::npos);   // one body, 100 steps, 600 per step
@@ -68,7 +69,7 @@ TEST_CASE("the work-precision data carry the scheme instructions of each run: pe
     CHECK(script->find("titles = 'direct(1.00x) zvw(1.50x)'") != std::string::npos);
     CHECK(script->find("using 5:2") != std::string::npos);
     // A scheme without a count: no instruction panel, rather than a panel that leaves it out.
-    convergence_plots("asymmetric_free", 1, {&a, &b}, dir, {{"direct", 600.0}});
+    convergence_plots("asymmetric_free", 1, {&a, &b}, out, {{"direct", 600.0}});
     CHECK(read_file(dir / "plots" / "work_precision_asymmetric_free.gp")->find("using 5:2") == std::string::npos);
     std::filesystem::remove_all(dir);
 }

@@ -1,6 +1,7 @@
 // Nothing lost (issue 8): a sweep killed or interrupted part-way keeps every run it
 // finished, and `rotbench run --resume DIR` ends with the files an uninterrupted run writes.
 #include "harness/io/journal.hpp"
+#include "harness/io/output_dir.hpp"
 #include "tests/cli_helpers.hpp"
 
 #include <catch2/catch.hpp>
@@ -127,14 +128,15 @@ TEST_CASE("a journal record cut short by a kill counts as not finished and is cu
     const RunResult a = run_one({"dipole_top", "direct", 1e-3, 0.01}, {.measure_time = false, .series_samples = 10});
     const RunResult b = run_one({"asymmetric_free", "zvw", 1e-2, 0.1}, {.measure_time = false});
     REQUIRE_FALSE(a.series.empty());
+    const std::vector<RunSpec> plan = {a.spec, b.spec, b.spec};
     {
-        const Journal journal = Journal::start(dir, {"run"}, "plan/1/1", 3);
+        const Journal journal = Journal::start(OutputDir::open(dir, {"run", "results.csv", {}}), {"run"}, "plan/1/1", plan);
         journal.record(0, a);
         journal.record(2, b);
     }
     const auto whole = fs::file_size(dir / "partial" / "runs");
     std::ofstream(dir / "partial" / "runs", std::ios::app) << "run 1 500 60 0\nscene,scheme,dt,metric,value\ndipole_to";
-    const Journal resumed = Journal::reopen(dir, "plan/1/1", 3);
+    const Journal resumed = Journal::reopen(OutputDir::open(dir, {"run", "results.csv", {}, false, true}), "plan/1/1", plan);
     CHECK(fs::file_size(dir / "partial" / "runs") == whole);  // the cut record is gone
     const auto runs = resumed.finished();
     REQUIRE(runs.size() == 2);
@@ -144,5 +146,27 @@ TEST_CASE("a journal record cut short by a kill counts as not finished and is cu
     CHECK(runs.at(2).value("omega_rms_x") == b.value("omega_rms_x"));
     resumed.record(1, b);
     CHECK(resumed.finished().size() == 3);
+    fs::remove_all(dir);
+}
+
+TEST_CASE("journal records that do not belong to the plan are refused, naming the record") {
+    const fs::path dir = fresh_dir("journal_foreign");
+    const RunResult a = run_one({"asymmetric_free", "zvw", 1e-2, 0.1}, {.measure_time = false});
+    const RunResult b = run_one({"asymmetric_free", "direct", 1e-2, 0.1}, {.measure_time = false});
+    const auto refused = [&](const std::vector<RunSpec>& plan, const std::function<void(const Journal&)>& write) {
+        fs::remove_all(dir);
+        const Journal journal = Journal::start(OutputDir::open(dir, {"run", "results.csv", {}}), {"run"}, "p/1/1", plan);
+        write(journal);
+        try {
+            journal.finished();
+        } catch (const InputError& e) {
+            return std::string(e.what());
+        }
+        return std::string();
+    };
+    CHECK_THAT(refused({a.spec}, [&](const Journal& j) { j.record(3, a); }), Catch::Contains("a record of run 3, and the plan has 1 runs"));
+    CHECK_THAT(refused({a.spec}, [&](const Journal& j) { j.record(0, b); }), Catch::Contains("the record of run 0 is of asymmetric_free direct"));
+    CHECK_THAT(refused({a.spec, a.spec}, [&](const Journal& j) { j.record(1, a), j.record(1, a); }), Catch::Contains("run 1 is recorded twice"));
+    CHECK(refused({a.spec, a.spec}, [&](const Journal& j) { j.record(1, a), j.record(0, a); }).empty());
     fs::remove_all(dir);
 }

@@ -3,6 +3,7 @@
 #include "harness/cli/outputs.hpp"
 #include "harness/cli/verb.hpp"
 #include "harness/gate/compare.hpp"
+#include "harness/io/output_dir.hpp"
 #include "harness/io/output_files.hpp"
 #include "harness/io/parse.hpp"
 #include "harness/io/results_csv.hpp"
@@ -24,18 +25,18 @@ public:
         command.add_option("--error-tolerance", error_, "relative error increase that is a regression")->capture_default_str();
         command.add_option("--order-tolerance", order_, "observed-order drop that is a regression")->capture_default_str();
         command.add_option("--cost-tolerance", cost_, "relative cost increase that is a regression, when significant")->capture_default_str();
-        command.add_flag("--overwrite", overwrite_, "replace a compare.csv already in --out");
+        command.add_flag("--overwrite", overwrite_, "replace compare's earlier outputs (in --out, and --junit and --summary files)");
     }
     int run(const Invocation& how) override {
         CompareOptions options;
         options.error_tolerance = parse_positive(error_, "--error-tolerance");
         options.order_tolerance = parse_positive(order_, "--order-tolerance");
         options.cost_tolerance = parse_positive(cost_, "--cost-tolerance");
-        for (const auto& [option, file] : {std::pair{"--junit", junit_}, std::pair{"--summary", summary_}})
-            if (const fs::path parent = fs::path(file).parent_path(); !file.empty() && !parent.empty() && !fs::is_directory(parent))
-                throw InputError(std::string(option) + " " + file + ": the directory " + parent.string() + " does not exist");
-        const fs::path dir = out_.empty() ? fs::path() : prepare_output(out_, "compare.csv", overwrite_);
         const auto base = read_results(base_), now = read_results(now_);
+        if (!junit_.empty()) check_output_file(junit_, "--junit", overwrite_, junit_signature);
+        if (!summary_.empty()) check_output_file(summary_, "--summary", overwrite_, markdown_signature);
+        std::optional<OutputDir> dir;
+        if (!out_.empty()) dir = OutputDir::open(out_, {"compare", "compare.csv", {"compare.csv", "summary.json"}, overwrite_});
         const Comparison c = compare_runs(base, now, options, base_);
         GateResult result;
         result.verdicts = c.verdicts;
@@ -43,9 +44,9 @@ public:
         how.out << gate_summary(result);
         if (!junit_.empty()) write_file_atomically(junit_, gate_junit(result, base_));
         if (!summary_.empty()) write_file_atomically(summary_, gate_markdown(result, base_ + " -> " + now_));
-        if (!dir.empty()) {
-            write_file_atomically(dir / "compare.csv", compare_csv(c));
-            write_file_atomically(dir / "summary.json", gate_summary_json(result, base_ + " -> " + now_, provenance()));
+        if (dir) {
+            dir->write("compare.csv", compare_csv(c));
+            dir->write("summary.json", gate_summary_json(result, base_ + " -> " + now_, provenance()));
         }
         return result.passed() ? 0 : 1;
     }

@@ -4,6 +4,7 @@
 #include "harness/engine/export.hpp"
 #include "harness/engine/sweep.hpp"
 #include "harness/io/config.hpp"
+#include "harness/io/output_dir.hpp"
 #include "harness/io/output_files.hpp"
 #include "harness/io/parse.hpp"
 #include "schemes/scheme.hpp"
@@ -15,6 +16,7 @@ namespace {
 
 struct ExportOptions {
     std::string scene, scheme, dt, t_end, out;
+    bool overwrite = false;
     std::vector<std::string> settings;
     int samples = 1000;
 
@@ -24,6 +26,7 @@ struct ExportOptions {
         cmd.add_option("--set", settings, "scene parameter KEY=VALUE (repeatable)");
         cmd.add_option("--samples", samples, "at most this many intervals between rows")->capture_default_str();
         cmd.add_option("--out", out, "output CSV file")->required();
+        cmd.add_flag("--overwrite", overwrite, "replace an --out file that an earlier export wrote");
     }
 
     // The scene, with --t-end and --set applied (--set takes KEY=VALUE or SCENE.KEY=VALUE).
@@ -39,11 +42,13 @@ struct ExportOptions {
         return make_scene(scene, overrides);
     }
 
+    // Before the work: the file must be new, or one an earlier export wrote and --overwrite.
+    void check() const {
+        if (samples < 1) throw InputError("--samples must be at least 1");
+        check_output_file(out, "--out", overwrite, trajectory_header);
+    }
     void write(const std::string& csv, std::ostream& log) const {
-        const std::filesystem::path path(out);
-        if (!path.parent_path().empty() && !std::filesystem::is_directory(path.parent_path()))
-            throw InputError("--out " + out + ": the directory " + path.parent_path().string() + " does not exist");
-        write_file_atomically(path, csv);
+        write_file_atomically(out, csv);
         log << "wrote " << out << "\n";
     }
 };
@@ -52,7 +57,9 @@ class ReferenceVerb final : public Verb {
 public:
     void add_options(CLI::App& command) override { o_.add_to(command); }
     int run(const Invocation& how) override {
-        o_.write(reference_csv(*o_.make(), o_.samples), how.out);
+        const auto scene = o_.make();
+        o_.check();
+        o_.write(reference_csv(*scene, o_.samples), how.out);
         return 0;
     }
 
@@ -70,7 +77,9 @@ public:
     int run(const Invocation& how) override {
         SchemeRegistry::instance().at(o_.scheme, "scheme");
         const double dt = parse_positive(o_.dt, "--dt");
-        o_.write(scheme_trajectory_csv(*o_.make(), o_.scheme, dt, o_.samples), how.out);
+        const auto scene = o_.make();
+        o_.check();
+        o_.write(scheme_trajectory_csv(*scene, o_.scheme, dt, o_.samples), how.out);
         return 0;
     }
 

@@ -7,7 +7,7 @@
 #include "harness/engine/parallel.hpp"
 #include "harness/gate/compare.hpp"
 #include "harness/gate/gate.hpp"
-#include "harness/io/journal.hpp"
+#include "harness/io/output_dir.hpp"
 #include "harness/io/output_files.hpp"
 #include "harness/io/results_csv.hpp"
 #include "reports/gate_report.hpp"
@@ -20,12 +20,6 @@ namespace rotbench {
 namespace {
 
 namespace fs = std::filesystem;
-
-void require_parent(const std::string& option, const std::string& file) {
-    const fs::path parent = fs::path(file).parent_path();
-    if (!parent.empty() && !fs::is_directory(parent))
-        throw InputError(option + " " + file + ": the directory " + parent.string() + " does not exist");
-}
 
 // $GITHUB_STEP_SUMMARY belongs to the CI runner and to every step: appended to, never replaced.
 void append_to(const std::string& path, const std::string& text) {
@@ -54,7 +48,7 @@ public:
         command.add_option("--baseline", baseline_, "DIR: also fail on regressions against the runs in DIR (as rotbench compare)");
         command.add_option("--shard", shard_, "K/N: run only the K-th of N slices of the gate's runs (judge the merge with --results)");
         command.add_option("--jobs", jobs_, "runs in parallel (results do not depend on it)")->check(CLI::Range(1, max_jobs));
-        command.add_flag("--overwrite", overwrite_, "replace a gate.csv already in --out");
+        command.add_flag("--overwrite", overwrite_, "replace the gate's earlier outputs (in --out, and --junit and --summary files)");
     }
 
     int run(const Invocation& how) override {
@@ -63,11 +57,18 @@ public:
         const PlanSlice slice = slice_plan(plan.runs, shard_);
         if (slice.shard && out_.empty()) throw InputError("--shard needs --out: a slice's runs are only worth their files");
         if (slice.shard && !results_.empty()) throw InputError("--results judges runs already made: no --shard with it");
-        if (!junit_.empty()) require_parent("--junit", junit_);
-        if (!summary_.empty()) require_parent("--summary", summary_);
-        std::optional<fs::path> dir;
-        if (how.resuming) dir = *how.resuming;
-        else if (!out_.empty()) dir = prepare_output(out_, "gate.csv", overwrite_);
+        // Every output is checked before the first run: a file in the way fails now, not after the work.
+        if (!junit_.empty()) {
+            check_output_file(junit_, "--junit", overwrite_, junit_signature);
+            check_output_file(fs::path(junit_).parent_path() / "summary.json", "--junit (summary.json beside it)", overwrite_,
+                              summary_json_signature);
+        }
+        if (!summary_.empty()) check_output_file(summary_, "--summary", overwrite_, markdown_signature);
+        std::optional<OutputDir> dir;
+        if (how.resuming || !out_.empty())
+            dir = OutputDir::open(how.resuming ? *how.resuming : fs::path(out_),
+                                  {"gate", "gate.csv", slice.shard ? slice_files : std::vector<std::string>{"gate.csv", "summary.json", "results.csv", "runs.csv"},
+                                   overwrite_, how.resuming.has_value()});
 
         const std::vector<RunResult> baseline = baseline_.empty() ? std::vector<RunResult>{} : read_results(baseline_);
         std::vector<RunResult> runs;
@@ -81,11 +82,11 @@ public:
                     runs[i].spec.kind != plan.runs[i].kind || runs[i].spec.dt != plan.runs[i].dt)
                     throw InputError("--results " + results_ + ": run " + std::to_string(i + 1) + " is not the one this gate makes there");
         } else {
-            const SweepOutcome outcome = sweep_plan(slice, dir, how, {.measure_time = true}, jobs_, true);
+            const SweepOutcome outcome = sweep_plan(slice, dir ? &*dir : nullptr, how, {.measure_time = true}, jobs_, true);
             if (outcome.exit_status) return outcome.exit_status;
             if (slice.shard) {
                 write_slice(*dir, slice, outcome.results, how.out);
-                Journal::discard(*dir);
+                discard_journal(*dir);
                 return 0;
             }
             runs = outcome.results;
@@ -108,11 +109,11 @@ public:
         if (!summary_.empty()) write_file_atomically(summary_, markdown);
         if (const char* step = std::getenv("GITHUB_STEP_SUMMARY"); step && *step) append_to(step, markdown);
         if (dir) {
-            write_file_atomically(*dir / "gate.csv", gate_csv(result));
-            write_file_atomically(*dir / "summary.json", json);
-            write_file_atomically(*dir / "results.csv", results_csv(result.runs));
-            write_file_atomically(*dir / "runs.csv", runs_csv(result.runs));
-            Journal::discard(*dir);
+            dir->write("gate.csv", gate_csv(result));
+            dir->write("summary.json", json);
+            dir->write("results.csv", results_csv(result.runs));
+            dir->write("runs.csv", runs_csv(result.runs));
+            discard_journal(*dir);
         }
         return result.passed() ? 0 : 1;
     }

@@ -16,7 +16,7 @@ public:
     int run(const Invocation& how) override {
         const std::vector<std::filesystem::path> dirs(dirs_.begin(), dirs_.end());
         const auto results = merge_shards(dirs);
-        write_outputs(prepare_output(out_, "results.csv", overwrite_), results, how.command_line, how.out);
+        write_outputs(OutputDir::open(out_, {"run", "results.csv", run_files, overwrite_}), results, how.command_line, how.out);
         return 0;
     }
 

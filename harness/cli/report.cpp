@@ -13,17 +13,24 @@ class ReportVerb final : public Verb {
 public:
     void add_options(CLI::App& command) override {
         command.add_option("DIR", dir_, "a directory written by rotbench run")->required();
+        command.add_option("--out", out_, "write report.md and its plots here instead (default: DIR)");
+        command.add_flag("--overwrite", overwrite_, "write into an --out that holds files rotbench did not write (beside them)");
     }
     int run(const Invocation& how) override {
-        const std::filesystem::path dir(dir_);
-        const ResultSet set = describe(read_results(dir));
-        write_file_atomically(dir / "report.md", markdown_report(set, how.command_line, dir, all_cores()));
-        how.out << "wrote " << (dir / "report.md").string() << "\n";
+        const ResultSet set = describe(read_results(dir_));
+        const OutputDir out = OutputDir::open(out_.empty() ? dir_ : out_, {"run", "", {"report.md"}, overwrite_});
+        if (out_.empty() || std::filesystem::equivalent(out_, dir_)) {
+        } else if (std::filesystem::exists(std::filesystem::path(dir_) / "cost.csv")) {  // the cost table goes with the report
+            out.write("cost.csv", read_input_file(std::filesystem::path(dir_) / "cost.csv", "cannot read"));
+        }
+        out.write("report.md", markdown_report(set, how.command_line, out, all_cores()));
+        how.out << "wrote " << (out.path() / "report.md").string() << "\n";
         return 0;
     }
 
 private:
-    std::string dir_;
+    std::string dir_, out_;
+    bool overwrite_ = false;
 };
 
 const RegisterVerb<ReportVerb> registration("report", "re-render report.md and its plots from the CSVs in DIR");

@@ -8,6 +8,7 @@
 #include "harness/engine/sweep.hpp"
 #include "harness/io/config.hpp"
 #include "harness/io/journal.hpp"
+#include "harness/io/output_dir.hpp"
 #include "harness/io/output_files.hpp"
 #include "harness/io/parse.hpp"
 #include "harness/io/results_csv.hpp"
@@ -86,14 +87,16 @@ int resume(const CLI::App& run_cmd, const std::string& dir, std::ostream& out, s
 
 int run_sweep_command(const RunOptionsText& o, const Invocation& how) {
     const PlanSlice slice = slice_plan(plan_sweep(sweep_spec(o)), o.shard);  // every input checked before anything runs
-    const fs::path dir = how.resuming ? *how.resuming : prepare_output(o.out, "results.csv", o.overwrite);
+    const OutputDir dir = OutputDir::open(how.resuming ? *how.resuming : fs::path(o.out),
+                                          {"run", "results.csv", slice.shard ? slice_files : run_files, o.overwrite,
+                                           how.resuming.has_value()});
     RunOptions options;
     options.series_samples = o.energy_series;
-    const SweepOutcome outcome = sweep_plan(slice, dir, how, options, o.jobs, false);
+    const SweepOutcome outcome = sweep_plan(slice, &dir, how, options, o.jobs, false);
     if (outcome.exit_status) return outcome.exit_status;
     if (!slice.shard) write_outputs(dir, outcome.results, how.command_line, how.out);
     else write_slice(dir, slice, outcome.results, how.out);  // no orders or report: they need every run
-    Journal::discard(dir);
+    discard_journal(dir);
     return 0;
 }
 

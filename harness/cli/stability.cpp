@@ -32,14 +32,15 @@ public:
         const auto zetas = parse_nonnegative_list(zetas_, "--zeta");
         const auto omegas = parse_positive_list(omegas_, "--omega-max");
         check_stability_scenes(scenes);
-        const auto dir = prepare_output(out_, "stability.csv", overwrite_);
+        const OutputDir dir = OutputDir::open(out_, {"stability", "stability.csv", {"stability.csv", "stability_spin.csv", "stability.md"},
+                                                     overwrite_});
         const auto rows = stability_study(scenes, schemes, zetas, omegas, jobs_);
-        write_file_atomically(dir / "stability.csv", stability_csv(rows));
-        write_file_atomically(dir / "stability_spin.csv", stability_spin_csv(rows));
-        write_file_atomically(dir / "stability.md", "# rotbench stability\n\nCommand: `" + how.command_line + "`\n\n" +
-                                                        stability_section(rows, dir) +
-                                                        spectral_radius_plots(spectral_radius_curves(scenes, schemes), dir));
-        how.out << "wrote " << (dir / "stability.csv").string() << " and " << (dir / "stability.md").string() << "\n";
+        dir.write("stability.csv", stability_csv(rows));
+        dir.write("stability_spin.csv", stability_spin_csv(rows));
+        const std::string section = stability_section(rows, dir);
+        dir.write("stability.md", "# rotbench stability\n\nCommand: `" + how.command_line + "`\n\n" + section +
+                                      spectral_radius_plots(spectral_radius_curves(scenes, schemes), dir));
+        how.out << "wrote " << (dir.path() / "stability.csv").string() << " and " << (dir.path() / "stability.md").string() << "\n";
         return 0;
     }
 

@@ -33,13 +33,13 @@ PlanSlice slice_plan(std::vector<RunSpec> plan, const std::string& shard_text) {
     return slice;
 }
 
-SweepOutcome sweep_plan(const PlanSlice& slice, const std::optional<fs::path>& dir, const Invocation& how,
-                        const RunOptions& options, int jobs, bool timed_alone) {
+SweepOutcome sweep_plan(const PlanSlice& slice, const OutputDir* dir, const Invocation& how, const RunOptions& options, int jobs,
+                        bool timed_alone) {
     const Shard shard = slice.shard.value_or(Shard{});
     const std::string journal_id = fmt::format("{}/{}/{}", slice.plan_id, shard.index, shard.count);
     std::optional<Journal> journal;
-    if (dir) journal = how.resuming ? Journal::reopen(*dir, journal_id, slice.runs.size())
-                                    : Journal::start(*dir, how.arguments, journal_id, slice.runs.size());
+    if (dir) journal = how.resuming ? Journal::reopen(*dir, journal_id, slice.runs)
+                                    : Journal::start(*dir, how.arguments, journal_id, slice.runs);
     std::map<std::size_t, RunResult> finished;
     if (journal) finished = journal->finished();
     if (how.resuming) how.out << fmt::format("resuming: {} of {} runs were finished\n", finished.size(), slice.runs.size());
@@ -49,15 +49,23 @@ SweepOutcome sweep_plan(const PlanSlice& slice, const std::optional<fs::path>& d
     for (std::size_t i = 0; i < slice.runs.size(); ++i)
         if (!finished.count(i)) phases[timed_alone && slice.runs[i].timed ? 1 : 0].push_back(i);
     std::mutex mutex;
+    std::optional<OutputError> write_failure;  // the first; the sweep stops at it
     const InterruptGuard guard;
-    for (int phase = 0; phase < 2 && !interrupt_signal(); ++phase) {
+    for (int phase = 0; phase < 2 && !interrupt_signal() && !write_failure; ++phase) {
         const auto& todo = phases[phase];
         std::vector<RunSpec> specs;
         for (std::size_t i : todo) specs.push_back(slice.runs[i]);
         run_sweep(
             specs, options,
             [&](std::size_t k, const RunResult& r) {
-                if (journal) journal->record(todo[k], r);
+                try {
+                    if (journal) journal->record(todo[k], r);
+                } catch (const OutputError& e) {
+                    std::lock_guard lock(mutex);
+                    if (!write_failure) write_failure = e;
+                    request_stop();  // no new run starts; the ones in flight stop
+                    return;
+                }
                 how.out << fmt::format("{:<16} {:<16} {:<10} dt={:<10g} {}\n", r.spec.scene, r.spec.scheme, kind_name(r.spec.kind),
                                        r.spec.dt, r.failure.empty() ? "ok" : "FAILED: " + r.failure);
                 std::lock_guard lock(mutex);
@@ -65,12 +73,24 @@ SweepOutcome sweep_plan(const PlanSlice& slice, const std::optional<fs::path>& d
             },
             phase == 1 ? 1 : jobs);
     }
+    if (write_failure) {
+        std::size_t kept = 0;
+        if (journal) {
+            try {
+                kept = journal->finished().size();
+            } catch (const std::exception&) {
+            }
+        }
+        throw OutputError(fmt::format("{}; {} of {} runs are kept in the journal, and rotbench run --resume {} finishes the sweep "
+                                      "once it can write",
+                                      write_failure->what(), kept, slice.runs.size(), dir->path().string()));
+    }
     SweepOutcome outcome;
     if (const int signal = interrupt_signal()) {
         how.err << fmt::format("rotbench: interrupted by signal {}: {} of {} runs are kept{}\n", signal, finished.size(),
                                slice.runs.size(),
-                               dir ? fmt::format(" in {}; rotbench run --resume {} finishes the sweep", (*dir / "partial").string(),
-                                                 dir->string())
+                               dir ? fmt::format(" in {}; rotbench run --resume {} finishes the sweep", (dir->path() / "partial").string(),
+                                                 dir->path().string())
                                    : " (none on disk: give --out to keep them)");
         outcome.exit_status = 128 + signal;
         return outcome;
@@ -82,14 +102,19 @@ SweepOutcome sweep_plan(const PlanSlice& slice, const std::optional<fs::path>& d
     return outcome;
 }
 
-void write_slice(const fs::path& dir, const PlanSlice& slice, const std::vector<RunResult>& results, std::ostream& out) {
-    write_file_atomically(dir / "results.csv", results_csv(results));
-    write_file_atomically(dir / "runs.csv", runs_csv(results));
+void write_slice(const OutputDir& dir, const PlanSlice& slice, const std::vector<RunResult>& results, std::ostream& out) {
+    dir.write("results.csv", results_csv(results));
+    dir.write("runs.csv", runs_csv(results));
     write_energy_series(results, dir);
-    write_file_atomically(dir / "shard.csv",
-                          shard_csv(slice.plan_id, slice.shard->index, slice.shard->count, results, slice.indices, slice.plan_size));
+    dir.write("shard.csv", shard_csv(slice.plan_id, slice.shard->index, slice.shard->count, results, slice.indices, slice.plan_size));
     out << fmt::format("wrote shard {}/{} ({} of {} runs) to {}; combine the shards with rotbench merge\n", slice.shard->index,
-                       slice.shard->count, results.size(), slice.plan_size, dir.string());
+                       slice.shard->count, results.size(), slice.plan_size, dir.path().string());
+}
+
+void discard_journal(const OutputDir& dir) {
+    std::error_code ec;
+    for (const char* f : {"plan", "runs", "command", "cwd", "plugins"}) fs::remove(dir.path() / "partial" / f, ec);
+    fs::remove(dir.path() / "partial", ec);  // when empty
 }
 
 }  // namespace rotbench

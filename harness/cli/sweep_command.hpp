@@ -5,6 +5,7 @@
 
 #include "harness/cli/verb.hpp"
 #include "harness/engine/run.hpp"
+#include "harness/io/output_dir.hpp"
 #include "harness/io/shard.hpp"
 
 #include <filesystem>
@@ -33,11 +34,16 @@ struct SweepOutcome {
 // every finished run goes to its journal (DIR/partial) first, and a resumed invocation
 // (how.resuming) runs only what is missing. `timed_alone`: the runs that are timed go last,
 // one at a time, so that they do not compete for the cores.
-SweepOutcome sweep_plan(const PlanSlice& slice, const std::optional<std::filesystem::path>& dir, const Invocation& how,
-                        const RunOptions& options, int jobs, bool timed_alone);
+// A file that cannot be written (a full disk) stops the sweep: the runs in flight finish, the
+// finished ones are kept in the journal, and the OutputError is rethrown.
+SweepOutcome sweep_plan(const PlanSlice& slice, const OutputDir* dir, const Invocation& how, const RunOptions& options, int jobs,
+                        bool timed_alone);
 
 // A slice's files for `rotbench merge`: results.csv, runs.csv, the energy series, shard.csv.
-void write_slice(const std::filesystem::path& dir, const PlanSlice& slice, const std::vector<RunResult>& results,
-                 std::ostream& out);
+inline const std::vector<std::string> slice_files = {"results.csv", "runs.csv", "shard.csv"};
+void write_slice(const OutputDir& dir, const PlanSlice& slice, const std::vector<RunResult>& results, std::ostream& out);
+
+// Removes the journal of `dir`, once the outputs it served are written.
+void discard_journal(const OutputDir& dir);
 
 }  // namespace rotbench

@@ -32,4 +32,9 @@ InterruptGuard::~InterruptGuard() {
 
 int interrupt_signal() { return caught.load(std::memory_order_relaxed); }
 
+void request_stop() {
+    int none = 0;
+    caught.compare_exchange_strong(none, -1);
+}
+
 }  // namespace rotbench

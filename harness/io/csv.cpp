@@ -95,9 +95,7 @@ std::vector<CsvRow> read_csv(const std::string& text, const std::string& name, c
 }
 
 std::vector<CsvRow> read_csv(const std::filesystem::path& path, const std::string& header) {
-    const auto text = read_file(path);
-    if (!text) throw InputError("cannot read " + path.string());
-    return read_csv(*text, path.string(), header);
+    return read_csv(read_input_file(path, "cannot read"), path.string(), header);
 }
 
 double csv_number(const std::string& text, const std::string& where) {

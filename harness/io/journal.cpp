@@ -1,11 +1,13 @@
 #include "harness/io/journal.hpp"
 
 #include "harness/io/parse.hpp"
+#include "harness/io/plugin.hpp"
 #include "harness/io/series_csv.hpp"
 #include "harness/io/output_files.hpp"
 #include "harness/io/results_csv.hpp"
 
 #include <cerrno>
+#include <cstring>
 #include <fcntl.h>
 #include <fmt/format.h>
 #include <sstream>
@@ -19,10 +21,12 @@ namespace {
 
 fs::path journal_dir(const fs::path& out_dir) { return out_dir / "partial"; }
 
-std::string read_text(const fs::path& path) {
-    auto text = read_file(path);
-    if (!text) throw InputError("cannot read " + path.string());
-    return std::move(*text);
+std::string read_text(const fs::path& path) { return read_input_file(path, "cannot read"); }
+
+std::string plugins_text() {
+    std::string text;
+    for (const auto& p : loaded_plugins()) text += p.hash + "\t" + p.path + "\n";
+    return text;
 }
 
 std::string plan_line(const std::string& plan_id, std::size_t plan_size) { return fmt::format("{} {}\n", plan_id, plan_size); }
@@ -35,9 +39,9 @@ struct Records {
     std::size_t whole_length = 0;
 };
 
-Records read_records(const fs::path& file) {
+Records read_records(const fs::path& file, const std::vector<RunSpec>& plan) {
     Records found;
-    const std::string text = read_file(file).value_or("");
+    const std::string text = fs::exists(file) ? read_input_file(file, "the journal") : "";
     std::size_t at = 0;
     while (at < text.size()) {
         const std::size_t line_end = text.find('\n', at);
@@ -57,7 +61,16 @@ Records read_records(const fs::path& file) {
             parsed = parse_results(results, runs,
                                    {{series_file_name(parsed.front()), text.substr(body + lengths[0] + lengths[1], lengths[2])}},
                                    file.string());
-        found.runs.insert_or_assign(index, std::move(parsed.front()));
+        const RunSpec& got = parsed.front().spec;
+        if (index >= plan.size())
+            throw InputError(fmt::format("{}: a record of run {}, and the plan has {} runs", file.string(), index, plan.size()));
+        const RunSpec& want = plan[index];
+        if (got.scene != want.scene || got.scheme != want.scheme || got.kind != want.kind || got.dt != want.dt)
+            throw InputError(fmt::format("{}: the record of run {} is of {} {} dt={}, the plan has {} {} dt={} there", file.string(),
+                                         index, got.scene, got.scheme, format_number(got.dt), want.scene, want.scheme,
+                                         format_number(want.dt)));
+        if (found.runs.count(index)) throw InputError(fmt::format("{}: run {} is recorded twice", file.string(), index));
+        found.runs.emplace(index, std::move(parsed.front()));
         at = end + trailer.size();
         found.whole_length = at;
     }
@@ -68,35 +81,37 @@ Records read_records(const fs::path& file) {
 
 bool Journal::exists(const fs::path& out_dir) { return fs::exists(journal_dir(out_dir) / "plan"); }
 
-Journal Journal::start(const fs::path& out_dir, const std::vector<std::string>& arguments, const std::string& plan_id,
-                       std::size_t plan_size) {
+Journal Journal::start(const OutputDir& out, const std::vector<std::string>& arguments, const std::string& plan_id,
+                       const std::vector<RunSpec>& plan) {
     std::string command;
     for (const auto& a : arguments) {
         if (a.find('\n') != std::string::npos) throw InputError("an argument holds a line break: '" + a + "'");
         command += a + "\n";
     }
-    const fs::path dir = journal_dir(out_dir);
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    write_file_atomically(dir / "command", command);
-    write_file_atomically(dir / "cwd", fs::current_path().string());
-    write_file_atomically(dir / "plan", plan_line(plan_id, plan_size));  // last: its presence marks a journal
-    return Journal(dir);
+    out.write("partial/command", command);
+    out.write("partial/cwd", fs::current_path().string());
+    out.write("partial/plugins", plugins_text());
+    out.claim("partial/runs");
+    out.write("partial/plan", plan_line(plan_id, plan.size()));  // last: its presence marks a journal
+    return Journal(out, plan);
 }
 
-Journal Journal::reopen(const fs::path& out_dir, const std::string& plan_id, std::size_t plan_size) {
-    const fs::path dir = journal_dir(out_dir);
+Journal Journal::reopen(const OutputDir& out, const std::string& plan_id, const std::vector<RunSpec>& plan) {
+    const fs::path out_dir = out.path(), dir = journal_dir(out_dir);
     if (!exists(out_dir)) throw InputError("--resume " + out_dir.string() + ": no interrupted run there (no partial/plan)");
-    if (read_text(dir / "plan") != plan_line(plan_id, plan_size))
+    if (read_text(dir / "plan") != plan_line(plan_id, plan.size()))
         throw InputError("--resume " + out_dir.string() + ": the sweep its command describes is not the one that was " +
                          "interrupted (a scheme, scene or plug-in changed); run it again with --overwrite");
+    if (fs::exists(dir / "plugins") && read_text(dir / "plugins") != plugins_text())
+        throw InputError("--resume " + out_dir.string() + ": a plug-in has changed since the run was interrupted (partial/plugins "
+                         "names each with its hash); run it again with --overwrite");
     // A record cut short by a kill would sit between the runs appended from now on: cut it off.
-    const fs::path runs = dir / "runs";
+    const fs::path runs = out.claim("partial/runs");
     if (fs::exists(runs)) {
-        const std::size_t whole = read_records(runs).whole_length;
+        const std::size_t whole = read_records(runs, plan).whole_length;
         if (whole != fs::file_size(runs)) fs::resize_file(runs, whole);
     }
-    return Journal(dir);
+    return Journal(out, plan);
 }
 
 std::vector<std::string> Journal::arguments(const fs::path& out_dir) {
@@ -113,7 +128,7 @@ fs::path Journal::working_directory(const fs::path& out_dir) {
     return cwd;
 }
 
-std::map<std::size_t, RunResult> Journal::finished() const { return read_records(dir_ / "runs").runs; }
+std::map<std::size_t, RunResult> Journal::finished() const { return read_records(journal_dir(out_.path()) / "runs", plan_).runs; }
 
 void Journal::record(std::size_t plan_index, const RunResult& result) const {
     const std::string results = results_csv({result}), runs = runs_csv({result});
@@ -121,23 +136,27 @@ void Journal::record(std::size_t plan_index, const RunResult& result) const {
     const std::string record = fmt::format("run {} {} {} {}\n{}{}{}end {}\n", plan_index, results.size(), runs.size(),
                                            series.size(), results, runs, series, plan_index);
     // One write(2) in append mode per record: records of several threads do not interleave.
-    const int fd = ::open((dir_ / "runs").c_str(), O_WRONLY | O_APPEND | O_CREAT | O_CLOEXEC, 0644);
-    if (fd < 0) throw std::runtime_error("cannot open " + (dir_ / "runs").string());
+    const fs::path file = journal_dir(out_.path()) / "runs";
+    const int fd = ::open(file.c_str(), O_WRONLY | O_APPEND | O_CREAT | O_CLOEXEC, 0644);
+    if (fd < 0) throw OutputError(fmt::format("cannot write {}: {}", file.string(), std::strerror(errno)));
     std::size_t written = 0;
     while (written < record.size()) {
         const ssize_t n = ::write(fd, record.data() + written, record.size() - written);
         if (n < 0 && errno == EINTR) continue;
         if (n <= 0) {
+            const int error = n < 0 ? errno : ENOSPC;
             ::close(fd);
-            throw std::runtime_error("cannot write " + (dir_ / "runs").string());
+            throw OutputError(fmt::format("cannot write {}: {}", file.string(), std::strerror(error)));
         }
         written += static_cast<std::size_t>(n);
     }
     ::close(fd);
 }
 
-void Journal::remove() const { fs::remove_all(dir_); }
-
-void Journal::discard(const fs::path& out_dir) { fs::remove_all(journal_dir(out_dir)); }
+void Journal::discard() const {
+    std::error_code ec;
+    for (const char* f : {"plan", "runs", "command", "cwd", "plugins"}) fs::remove(journal_dir(out_.path()) / f, ec);
+    fs::remove(journal_dir(out_.path()), ec);  // when empty
+}
 
 }  // namespace rotbench

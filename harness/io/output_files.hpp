@@ -1,17 +1,33 @@
-// Writing output files so that a kill never leaves a half-written one: write a temporary
-// file beside the target, then rename it over the target (atomic on POSIX).
+// Reading and writing files. Output is written to a temporary file beside the target and
+// renamed over it (atomic on POSIX), so a kill or a full disk never leaves half a file; input
+// is read only from regular files of bounded size, so /dev/zero or a FIFO is refused, not
+// read forever.
 #pragma once
 
+#include <cstddef>
 #include <filesystem>
 #include <optional>
+#include <stdexcept>
 #include <string>
 
 namespace rotbench {
 
+// A file that could not be written once the work had started (a full disk, a directory made
+// read-only under it): the command stops, keeps what it finished, and exits 3.
+struct OutputError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+// OutputError naming the file and the reason; no temporary file is left behind.
 void write_file_atomically(const std::filesystem::path& path, const std::string& content);
 
 // The whole file as it is on disk, or nothing when it cannot be opened.
 std::optional<std::string> read_file(const std::filesystem::path& path);
+
+// An input file a user names (config, gate, CSV): InputError unless it is a regular file of
+// at most `max_bytes`, naming `what` (the option or role) and the path.
+inline constexpr std::size_t max_input_bytes = 256u << 20;  // 256 MiB: twice a default suite's CSVs, many times over
+std::string read_input_file(const std::filesystem::path& path, const std::string& what, std::size_t max_bytes = max_input_bytes);
 
 // A number in the shortest form that reads back to the same double; "nan", "inf", "-inf".
 std::string format_number(double value);

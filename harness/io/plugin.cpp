@@ -2,14 +2,50 @@
 
 #include "schemes/plugin_abi.hpp"
 
+#include "harness/io/output_files.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cstdint>
 #include <dlfcn.h>
+#include <fmt/format.h>
 #include <filesystem>
 
 namespace rotbench {
 
+namespace {
+
+std::vector<LoadedPlugin>& plugins() {
+    static std::vector<LoadedPlugin> list;
+    return list;
+}
+
+std::string hash_of(const std::string& bytes) {
+    std::uint64_t h = 14695981039346656037ull;  // FNV-1a, 64 bit
+    for (unsigned char c : bytes) h = (h ^ c) * 1099511628211ull;
+    return fmt::format("{:016x}", h);
+}
+
+bool is_id(const std::string& s) {
+    return !s.empty() && std::all_of(s.begin(), s.end(), [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; });
+}
+
+}  // namespace
+
+const std::vector<LoadedPlugin>& loaded_plugins() { return plugins(); }
+
+const LoadedPlugin* plugin_of(const std::string& scheme) {
+    for (const auto& p : plugins())
+        if (std::find(p.schemes.begin(), p.schemes.end(), scheme) != p.schemes.end()) return &p;
+    return nullptr;
+}
+
 std::vector<std::string> load_plugin(const std::string& path) {
     const std::string where = "--plugin " + path;
     if (!std::filesystem::exists(path)) throw InputError(where + ": no such file");
+    if (!std::filesystem::is_regular_file(path)) throw InputError(where + ": not a regular file");
+    const auto bytes = read_file(path);
+    if (!bytes) throw InputError(where + ": cannot read the file");
     // A path without '/' would make dlopen search the library path instead of this file.
     const std::string file = path.find('/') == std::string::npos ? "./" + path : path;
     void* handle = dlopen(file.c_str(), RTLD_NOW | RTLD_LOCAL);
@@ -31,10 +67,13 @@ std::vector<std::string> load_plugin(const std::string& path) {
     const auto ids = theirs.ids();
     if (ids.empty()) throw InputError(where + ": the plug-in registers no scheme");
     auto& ours = SchemeRegistry::instance();
-    for (const auto& id : ids)
+    for (const auto& id : ids) {
+        if (!is_id(id)) throw InputError(where + ": scheme id '" + id + "' is not letters, digits and underscores");
         if (ours.contains(id))
             throw InputError(where + ": scheme '" + id + "' is already registered; give the plug-in's scheme another id");
+    }
     for (const auto& id : ids) ours.add(theirs.at(id, "scheme"));
+    plugins().push_back({std::filesystem::absolute(path).string(), hash_of(*bytes), ids});
     return ids;  // the handle is kept open: the factories live in the library
 }
 

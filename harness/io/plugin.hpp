@@ -12,7 +12,17 @@
 
 namespace rotbench {
 
-// Returns the ids of the schemes it added.
+// Returns the ids of the schemes it added. Every id must be letters, digits and underscores,
+// and new to the registry.
 std::vector<std::string> load_plugin(const std::string& path);
+
+struct LoadedPlugin {
+    std::string path;  // absolute
+    std::string hash;  // FNV-1a of the file's bytes, hex: a plug-in rebuilt since is another one
+    std::vector<std::string> schemes;
+};
+const std::vector<LoadedPlugin>& loaded_plugins();
+// The plug-in a scheme came from, or nullptr for a built-in one.
+const LoadedPlugin* plugin_of(const std::string& scheme);
 
 }  // namespace rotbench

@@ -156,11 +156,7 @@ std::vector<RunResult> parse_results(const std::string& results_text, const std:
 }
 
 std::vector<RunResult> read_results(const std::filesystem::path& dir) {
-    auto text = [&](const std::filesystem::path& path) {
-        auto content = read_file(path);
-        if (!content) throw InputError("cannot read " + path.string());
-        return std::move(*content);
-    };
+    auto text = [&](const std::filesystem::path& path) { return read_input_file(path, "cannot read"); };
     // Not parse_results: runs.csv is parsed before results.csv is read, so that a malformed
     // runs.csv is the error named even when results.csv is missing (tests/test_bad_input.cpp).
     std::vector<std::size_t> counts;
@@ -169,7 +165,7 @@ std::vector<RunResult> read_results(const std::filesystem::path& dir) {
     std::map<std::string, std::string> series;
     std::error_code ec;
     for (const auto& e : std::filesystem::directory_iterator(dir / "series", ec))
-        if (auto content = read_file(e.path())) series.emplace(e.path().filename().string(), std::move(*content));
+        if (e.path().extension() == ".csv") series.emplace(e.path().filename().string(), read_input_file(e.path(), "cannot read"));
     add_series(series, dir.string(), results);
     return results;
 }

@@ -24,15 +24,11 @@ std::string series_csv(const RunResult& r) {
     return csv;
 }
 
-void write_series_file(const RunResult& r, const std::filesystem::path& dir) {
-    write_file_atomically(dir / series_file_name(r), series_csv(r));
-}
+void write_series_file(const RunResult& r, const OutputDir& dir) { dir.write("series/" + series_file_name(r), series_csv(r)); }
 
-void write_energy_series(const std::vector<RunResult>& results, const std::filesystem::path& dir) {
-    if (std::none_of(results.begin(), results.end(), [](const RunResult& r) { return !r.series.empty(); })) return;
-    std::filesystem::create_directories(dir / "series");
+void write_energy_series(const std::vector<RunResult>& results, const OutputDir& dir) {
     for (const auto& r : results)
-        if (!r.series.empty()) write_series_file(r, dir / "series");
+        if (!r.series.empty()) write_series_file(r, dir);
 }
 
 }  // namespace rotbench

@@ -41,6 +41,10 @@ std::string ascii_toml(std::string_view text, const std::string& name) {
     ascii.reserve(text.size());
     Context context = Context::bare;
     std::size_t line = 1, column = 1;
+    // toml++ parses nesting by recursion: a file of 200 000 nested tables overflows its stack.
+    // No configuration nests more than a few levels; 64 is refused before toml++ sees it.
+    constexpr int max_depth = 64;
+    int depth = 0;
     const auto fail = [&](const std::string& what) { throw InputError(fmt::format("{}:{}:{}: {}", name, line, column, what)); };
     const auto starts = [&](std::size_t i, std::string_view s) { return text.substr(i, s.size()) == s; };
     for (std::size_t i = 0; i < text.size();) {
@@ -68,6 +72,11 @@ std::string ascii_toml(std::string_view text, const std::string& name) {
         const char c = text[i];
         switch (context) {
             case Context::bare:
+                if (c == '[' || c == '{') {
+                    if (++depth > max_depth) fail(fmt::format("nested more than {} levels deep", max_depth));
+                } else if ((c == ']' || c == '}') && depth > 0) {
+                    --depth;
+                }
                 if (c == '#') context = Context::comment;
                 else if (starts(i, "\"\"\"")) context = Context::multiline_basic, length = 3;
                 else if (starts(i, "'''")) context = Context::multiline_literal, length = 3;

@@ -65,11 +65,8 @@ std::string text(const std::string& path, const std::string& key, const toml::no
 }
 
 toml::table parse_toml_file(const std::string& path) {
-    // toml++ reads a directory as an empty file: a sweep of everything, not an error.
-    if (std::filesystem::is_directory(path)) throw InputError(path + ": cannot read the file (a directory)");
-    const auto text = read_file(path);
-    if (!text) throw InputError(path + ": cannot read the file (File could not be opened for reading)");
-    return parse_toml_text(*text, path);
+    // A configuration or gate file: a few kilobytes. 1 MiB bounds what a typo can make it read.
+    return parse_toml_text(read_input_file(path, "", 1u << 20), path);
 }
 
 toml::table parse_toml_text(std::string_view text, const std::string& name) {

@@ -1,0 +1,146 @@
+// Nothing lost, nothing injected (docs/outputs.md "Output directories"): rotbench writes only
+// into directories that are new, empty or carry its manifest; never deletes or replaces a file
+// it did not write; refuses a second process writing into a directory in use; and starts
+// gnuplot without a shell, so any path works and none runs a command.
+#include "harness/io/output_dir.hpp"
+#include "tests/cli_helpers.hpp"
+
+#include <catch2/catch.hpp>
+#include <chrono>
+#include <csignal>
+#include <thread>
+
+using namespace rotbench;
+using namespace rotbench::test;
+
+namespace {
+
+const std::vector<std::string> one_run = {"run", "--scenes", "dipole_top", "--schemes", "direct", "--dt", "0.01"};
+
+std::vector<std::string> with(std::vector<std::string> args, const std::vector<std::string>& more) {
+    args.insert(args.end(), more.begin(), more.end());
+    return args;
+}
+
+}  // namespace
+
+TEST_CASE("outputs: a user's files in the output directory are never deleted or replaced, --overwrite or not") {
+    const fs::path dir = fresh_dir("outputs_foreign");
+    fs::create_directories(dir / "partial");
+    write(dir / "partial" / "notes.txt", "mine\n");
+    write(dir / "notes.md", "mine\n");
+    // Not ours: refused without --overwrite; with it rotbench writes beside the user's files.
+    const Cli refused = cli(with(one_run, {"--out", dir.string()}));
+    CHECK(refused.status == 2);
+    CHECK_THAT(refused.err, Catch::Contains("holds files rotbench did not write"));
+    REQUIRE(cli(with(one_run, {"--out", dir.string(), "--overwrite"})).status == 0);
+    CHECK(read(dir / "partial" / "notes.txt") == "mine\n");
+    CHECK(read(dir / "notes.md") == "mine\n");
+    CHECK(fs::exists(dir / "report.md"));
+    // Our files are ours from now on: --overwrite replaces them, and only them.
+    REQUIRE(cli(with(one_run, {"--out", dir.string(), "--overwrite"})).status == 0);
+    CHECK(read(dir / "notes.md") == "mine\n");
+    // A user's file in the way of one rotbench writes is refused before anything runs.
+    const fs::path other = fresh_dir("outputs_in_the_way");
+    fs::create_directories(other);
+    write(other / "report.md", "my report\n");
+    const Cli blocked = cli(with(one_run, {"--out", other.string(), "--overwrite"}));
+    CHECK(blocked.status == 2);
+    CHECK_THAT(blocked.err, Catch::Contains("report.md exists and was not written by rotbench; it is never replaced"));
+    CHECK(read(other / "report.md") == "my report\n");
+    CHECK_FALSE(fs::exists(other / "results.csv"));
+    fs::remove_all(dir);
+    fs::remove_all(other);
+}
+
+TEST_CASE("outputs: a gate never replaces a finished run's results, and another family may write beside it") {
+    const fs::path dir = fresh_dir("outputs_families");
+    REQUIRE(cli(with(one_run, {"--out", dir.string()})).status == 0);
+    const std::string results = read(dir / "results.csv");
+    write(dir / "g.toml", "[[check]]\nscene = \"dipole_top\"\nschemes = [\"direct\"]\nmax_error = 1\ndt = 0.01\n");
+    const Cli gate = cli({"gate", (dir / "g.toml").string(), "--out", dir.string(), "--overwrite"});
+    CHECK(gate.status == 2);
+    CHECK_THAT(gate.err, Catch::Contains("results.csv was written by rotbench run; it is not replaced by gate"));
+    CHECK(read(dir / "results.csv") == results);
+    // The stability study writes other files: beside the run's, which stay as they were.
+    REQUIRE(cli({"stability", "--scenes", "sphere_pair", "--schemes", "direct", "--zeta", "0", "--out", dir.string()}).status == 0);
+    CHECK(fs::exists(dir / "stability.csv"));
+    CHECK(read(dir / "results.csv") == results);
+    fs::remove_all(dir);
+}
+
+TEST_CASE("outputs: a single output file is replaced only with --overwrite, and only when rotbench wrote it") {
+    const fs::path dir = fresh_dir("outputs_single");
+    fs::create_directories(dir);
+    const std::string file = (dir / "ref.csv").string();
+    const std::vector<std::string> export_args = {"reference", "--scene", "dipole_top", "--samples", "10", "--out", file};
+    REQUIRE(cli(export_args).status == 0);
+    const Cli again = cli(export_args);
+    CHECK(again.status == 2);
+    CHECK_THAT(again.err, Catch::Contains("exists; pass --overwrite to replace it"));
+    CHECK(cli(with(export_args, {"--overwrite"})).status == 0);
+    write(file, "my data\n");
+    const Cli foreign = cli(with(export_args, {"--overwrite"}));
+    CHECK(foreign.status == 2);
+    CHECK_THAT(foreign.err, Catch::Contains("is not a file rotbench wrote; it is never replaced"));
+    CHECK(read(file) == "my data\n");
+    fs::remove_all(dir);
+}
+
+TEST_CASE("outputs: a second process writing into a directory in use is refused") {
+    const fs::path dir = fresh_dir("outputs_lock");
+    // A first process holds the directory (a sweep of a few seconds); a second is refused, and the
+    // first finishes unharmed.
+    std::vector<std::string> args = {ROTBENCH_EXE, "run", "--scenes", "dipole_top", "--dt", "1e-4", "--jobs", "1", "--out", dir.string()};
+    const pid_t pid = fork();
+    if (pid == 0) {
+        freopen("/dev/null", "w", stdout);
+        freopen("/dev/null", "w", stderr);
+        std::vector<char*> argv;
+        for (auto& a : args) argv.push_back(a.data());
+        argv.push_back(nullptr);
+        execv(argv[0], argv.data());
+        _exit(127);
+    }
+    while (!fs::exists(dir / "partial" / "plan")) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    const Cli second = cli(with(one_run, {"--out", dir.string(), "--overwrite"}));
+    CHECK(second.status == 2);
+    CHECK_THAT(second.err, Catch::Contains("is in use by another rotbench (process " + std::to_string(pid) + ")"));
+    kill(pid, SIGTERM);
+    int status = 0;
+    waitpid(pid, &status, 0);
+    fs::remove_all(dir);
+}
+
+TEST_CASE("outputs: gnuplot runs without a shell: a path with quotes or a command in it draws its plots and runs nothing") {
+    const fs::path base = fresh_dir("outputs_quotes");
+    for (const std::string name : {"it's", "x'; touch PWNED; echo '", "$(touch PWNED)", "a\"b `touch PWNED`"}) {
+        const fs::path dir = base / name;
+        const Cli r = cli(with(one_run, {"--out", dir.string()}));
+        INFO(name << ": " << r.err);
+        REQUIRE(r.status == 0);
+        CHECK(fs::exists(dir / "plots" / "convergence_dipole_top.svg"));
+        CHECK(read(dir / "report.md").find("not drawn") == std::string::npos);
+    }
+    CHECK_FALSE(fs::exists("PWNED"));
+    CHECK_FALSE(fs::exists(base / "PWNED"));
+    fs::remove_all(base);
+}
+
+TEST_CASE("outputs: without gnuplot the report says it is not installed, and a failing gnuplot is named, not called missing") {
+    const fs::path dir = fresh_dir("outputs_no_gnuplot");
+    fs::create_directories(dir / "bin");
+    const Cli missing = binary(with(one_run, {"--out", (dir / "a").string()}), {"PATH=" + (dir / "bin").string()});
+    REQUIRE(missing.status == 0);
+    CHECK_THAT(read(dir / "a" / "report.md"), Catch::Contains("gnuplot is not installed"));
+    // A gnuplot that fails: said so, with its status.
+    write(dir / "bin" / "gnuplot", "#!/bin/sh\nexit 3\n");
+    fs::permissions(dir / "bin" / "gnuplot", fs::perms::owner_all);
+    const Cli failing = binary(with(one_run, {"--out", (dir / "b").string()}), {"PATH=" + (dir / "bin").string()});
+    REQUIRE(failing.status == 0);
+    const std::string report = read(dir / "b" / "report.md");
+    CHECK_THAT(report, Catch::Contains("gnuplot failed on plots/convergence_dipole_top.gp (exit status 3)"));
+    CHECK(report.find("not installed") == std::string::npos);
+    CHECK_FALSE(fs::exists(dir / "b" / "plots" / "convergence_dipole_top.svg"));  // no empty or partial SVG
+    fs::remove_all(dir);
+}
