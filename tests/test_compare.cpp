@@ -13,11 +13,12 @@ using namespace rotbench::test;
 
 namespace {
 
-const Verdict& find(const Comparison& c, const std::string& id) {
+// By value: callers pass the temporary that compare_runs returns.
+Verdict find(const Comparison& c, const std::string& id) {
     for (const auto& v : c.verdicts)
         if (v.of.id == id) return v;
     FAIL("no verdict " << id);
-    return c.verdicts.front();
+    return {};
 }
 
 std::vector<RunResult> ladder(const std::string& scheme) {
@@ -53,7 +54,7 @@ TEST_CASE("compare: an identical rerun passes, a degraded error and a lost order
     auto worse = base;
     for (auto& [name, value] : worse[2].metrics)
         if (name == "omega_err_max") value *= 1.2;
-    const Verdict& acc = find(compare_runs(base, worse, {}, "base"), "baseline_accuracy");
+    const Verdict acc = find(compare_runs(base, worse, {}, "base"), "baseline_accuracy");
     CHECK_FALSE(acc.passed);
     CHECK_THAT(acc.message, Catch::Contains("omega_err_max at dt = 0.005") && Catch::Contains("+20.0 %"));
     auto within = base;
@@ -63,7 +64,7 @@ TEST_CASE("compare: an identical rerun passes, a degraded error and a lost order
     // A first-order scheme in place of a second-order one: the order falls by one.
     auto first_order = ladder("zvw");
     for (auto& r : first_order) r.spec.scheme = "no_squish";
-    const Verdict& ord = find(compare_runs(base, first_order, {}, "base"), "baseline_order");
+    const Verdict ord = find(compare_runs(base, first_order, {}, "base"), "baseline_order");
     CHECK_FALSE(ord.passed);
     CHECK_THAT(ord.message, Catch::Contains("fell from 2.00 to 1.00"));
 }
@@ -74,7 +75,7 @@ TEST_CASE("compare: a run newly unstable fails") {
     for (auto& [name, value] : now[0].metrics)
         if (name == "unstable") value = 1.0;
     now[0].failure = "blew up at step 3 (t = 0.06 s)";
-    const Verdict& v = find(compare_runs(base, now, {}, "base"), "baseline_stability");
+    const Verdict v = find(compare_runs(base, now, {}, "base"), "baseline_stability");
     CHECK_FALSE(v.passed);
     CHECK_THAT(v.message, Catch::Contains("unstable now (blew up at step 3"));
 }
@@ -99,7 +100,7 @@ TEST_CASE("compare: a cost regression counts only when it is large and significa
         runs.resize(2);
         return runs;
     };
-    const Verdict& untested = find(compare_runs(thin(1.0), thin(1.5), {}, "base"), "baseline_cost");
+    const Verdict untested = find(compare_runs(thin(1.0), thin(1.5), {}, "base"), "baseline_cost");
     CHECK(untested.passed);  // 2 repeats each: nothing to test
     CHECK_THAT(untested.message, Catch::Contains("not tested"));
 }
