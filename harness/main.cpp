@@ -1,6 +1,13 @@
-// rotbench: dispatches to the verbs of harness/cli/, one file each.
+// rotbench: dispatches to the verbs of harness/cli/, one file each. Its own executable is the
+// worker that plug-in runs are isolated in (harness/engine/isolation.hpp).
 #include "harness/cli/cli.hpp"
+#include "harness/engine/isolation.hpp"
 
+#include <filesystem>
 #include <iostream>
 
-int main(int argc, char** argv) { return rotbench::run_cli(argc, argv, std::cout, std::cerr); }
+int main(int argc, char** argv) {
+    std::error_code ec;
+    rotbench::set_worker_executable(std::filesystem::read_symlink("/proc/self/exe", ec).string());
+    return rotbench::run_cli(argc, argv, std::cout, std::cerr);
+}

@@ -112,7 +112,7 @@ double approach_limit(const std::vector<double>& before, const std::vector<doubl
 // and 1e-8 from a single accepted step that ends at a contact exit.
 template <class Controlled>
 void integrate_with_events(Controlled& controlled, EquationsOfMotion& system, State& y, const std::vector<double>& times,
-                           Trajectory& out) {
+                           Trajectory& out, const std::function<bool()>& keep_going) {
     auto rhs = [&](const State& s, State& d, double t) { system(s, d, t); };
     odeint::runge_kutta_fehlberg78<State> probe;
     const double restart_step = 1e-10 * (times.back() - times.front());
@@ -124,6 +124,7 @@ void integrate_with_events(Controlled& controlled, EquationsOfMotion& system, St
     for (std::size_t k = 1; k < times.size(); ++k) {
         while (t < times[k]) {
             if (++attempts > 100000000) throw std::runtime_error("Odeint reference: no progress");
+            if (attempts % 1024 == 0 && keep_going && !keep_going()) throw std::runtime_error("Odeint reference: stopped");
             const double target = event && *event < times[k] ? *event : times[k];
             // Toward a located crossing the steps are graded: each covers at most half of
             // what is left, so no step ends on the singularity with a large size.
@@ -168,7 +169,8 @@ void integrate_with_events(Controlled& controlled, EquationsOfMotion& system, St
 
 }  // namespace
 
-Trajectory integrate_scene(const Dynamics& scene, const std::vector<double>& times, OdeMethod method, double tolerance) {
+Trajectory integrate_scene(const Dynamics& scene, const std::vector<double>& times, OdeMethod method, double tolerance,
+                           const std::function<bool()>& keep_going) {
     EquationsOfMotion system(scene);
     Trajectory out;
     out.bodies = system.bodies();
@@ -181,10 +183,10 @@ Trajectory integrate_scene(const Dynamics& scene, const std::vector<double>& tim
         using Stepper = odeint::runge_kutta_fehlberg78<State>;
         odeint::controlled_runge_kutta<Stepper> stepper(
             odeint::default_error_checker<double, Stepper::algebra_type, Stepper::operations_type>(tolerance, tolerance, 1.0, 0.0));
-        integrate_with_events(stepper, system, y, times, out);
+        integrate_with_events(stepper, system, y, times, out, keep_going);
     } else {
         odeint::bulirsch_stoer<State> stepper(tolerance, tolerance, 1.0, 0.0);
-        integrate_with_events(stepper, system, y, times, out);
+        integrate_with_events(stepper, system, y, times, out, keep_going);
     }
     return out;
 }

@@ -6,6 +6,7 @@
 
 #include "references/trajectory.hpp"
 
+#include <functional>
 #include <vector>
 
 namespace rotbench {
@@ -22,8 +23,10 @@ inline constexpr double reference_tolerance = 1e-14;
 // t_k = t_end k / samples, k = 0 .. samples.
 std::vector<double> equally_spaced_times(double t_end, int samples);
 
+// `keep_going`, when given, is asked every thousand steps; once it says no, the integration
+// throws (an interrupted sweep does not wait for a long reference to finish).
 Trajectory integrate_scene(const Dynamics& scene, const std::vector<double>& times, OdeMethod method,
-                           double tolerance = reference_tolerance);
+                           double tolerance = reference_tolerance, const std::function<bool()>& keep_going = {});
 
 // Largest difference between the two methods on `samples` + 1 equally spaced times over
 // [0, t_end]: angular velocity relative to its largest norm, orientation angle (rad),

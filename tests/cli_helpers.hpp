@@ -7,8 +7,10 @@
 #include "harness/engine/run.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <sstream>
 #include <string>
 #include <sys/wait.h>
@@ -81,15 +83,19 @@ inline int run_program(std::vector<std::string> argv_text) {
 // The real binary run with `args` (no shell) and, besides the environment of the tests,
 // `environment` ("NAME=VALUE"); its status and what it printed. The real binary holds none
 // of the test-only schemes that this test program registers.
-inline Cli binary(const std::vector<std::string>& args, const std::vector<std::string>& environment = {}) {
+// `in_child`, when given, runs in the child before the exec (a resource limit, say).
+inline Cli binary(const std::vector<std::string>& args, const std::vector<std::string>& environment = {},
+                  const std::function<void()>& in_child = {}) {
     static int serial = 0;
     const fs::path base = fs::temp_directory_path() / ("rotbench_binary_" + std::to_string(::getpid()) + "_" + std::to_string(serial++));
     std::vector<std::string> argv_text = {ROTBENCH_EXE};
     argv_text.insert(argv_text.end(), args.begin(), args.end());
+    std::fflush(nullptr);  // or the child's freopen writes out what the test had buffered
     const pid_t pid = fork();
     if (pid == 0) {
         if (!freopen((base.string() + ".out").c_str(), "w", stdout) || !freopen((base.string() + ".err").c_str(), "w", stderr)) _exit(126);
         for (const auto& e : environment) putenv(const_cast<char*>(e.c_str()));
+        if (in_child) in_child();
         std::vector<char*> argv;
         for (auto& a : argv_text) argv.push_back(a.data());
         argv.push_back(nullptr);

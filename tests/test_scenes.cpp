@@ -7,6 +7,7 @@
 
 #include <catch2/catch.hpp>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -185,6 +186,32 @@ TEST_CASE("scene parameters change the run") {
     const RunResult stronger =
         run_one({"torqued_cylinder", "direct", 1e-2, 1.0, {{"torque", {0.05}}}}, {.measure_time = false});
     CHECK(base.value("omega_rms_z") != stronger.value("omega_rms_z"));
+}
+
+TEST_CASE("a damaged reference cache file is a miss, never a wrong reference") {
+    Trajectory t;
+    t.bodies = 2;
+    for (std::size_t k = 0; k < 3 * 2 * Trajectory::width; ++k) t.values.push_back(0.1 * k);
+    const std::string bytes = encode_trajectory("key", t);
+    REQUIRE(decode_trajectory(bytes, "key"));
+    CHECK(decode_trajectory(bytes, "key")->values == t.values);
+    CHECK_FALSE(decode_trajectory(bytes, "other key"));
+    // Every single flipped bit and every truncation is detected.
+    int missed = 0;
+    for (std::size_t i = 0; i < bytes.size(); ++i)
+        for (int bit = 0; bit < 8; ++bit) {
+            std::string damaged = bytes;
+            damaged[i] = static_cast<char>(damaged[i] ^ (1 << bit));
+            missed += decode_trajectory(damaged, "key").has_value();
+        }
+    for (std::size_t n = 0; n < bytes.size(); ++n) missed += decode_trajectory(bytes.substr(0, n), "key").has_value();
+    missed += decode_trajectory(bytes + "x", "key").has_value();
+    CHECK(missed == 0);
+    // A count that claims more values than the file holds is refused before any allocation.
+    std::string huge = bytes;
+    const std::uint64_t count = std::uint64_t(1) << 60;
+    std::memcpy(huge.data() + 8 + 8 + 3 + 8, &count, sizeof count);
+    CHECK_FALSE(decode_trajectory(huge, "key"));
 }
 
 TEST_CASE("reference trajectories are cached on disk, keyed by their inputs and the build") {

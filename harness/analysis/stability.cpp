@@ -60,8 +60,8 @@ bool unstable_at(const Scene& scene, const std::string& scheme_id, double dt, co
             blew_up = !std::isfinite(e) || e > c.growth * e0;
             return !blew_up && !interrupt_signal();  // a signal ends the search (the caller drops it)
         });
-    } catch (const std::exception&) {
-        return true;  // a scheme that throws has failed at this dt
+    } catch (...) {
+        return true;  // a scheme that throws (anything) has failed at this dt
     }
     return blew_up;
 }
@@ -164,6 +164,7 @@ StepJacobian step_jacobian(const Scene& scene, const std::string& scheme_id, dou
 
 double spectral_radius(const Scene& scene, const StepJacobian& j) {
     const Eigen::MatrixXd& jacobian = j.scaled;
+    if (!jacobian.allFinite()) return std::numeric_limits<double>::infinity();  // the step map itself blew up
     const Bodies rest = scene.initial_state();
     const std::size_t n = rest.size();
     const Eigen::Index dim = jacobian.rows();
@@ -198,7 +199,7 @@ double amplification_limit(const Scene& scene, const std::string& scheme, double
             double rho = 0;
             try {
                 rho = spectral_radius(scene, step_jacobian(scene, scheme, dt));
-            } catch (const std::exception&) {
+            } catch (...) {
                 return true;  // as in unstable_at: a scheme that throws has failed at this dt
             }
             return !std::isfinite(rho) || 2.0 * (c.horizon / dt) * std::log(rho) >= std::log(c.growth);
@@ -209,7 +210,7 @@ double amplification_limit(const Scene& scene, const std::string& scheme, double
 bool unstable_at_every_dt(const Scene& scene, const std::string& scheme, double dt_small) {
     try {
         return spectral_radius(scene, step_jacobian(scene, scheme, dt_small)) > 1.0 + 1e-6;
-    } catch (const std::exception&) {
+    } catch (...) {
         return true;
     }
 }

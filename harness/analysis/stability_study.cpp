@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <fmt/format.h>
 #include <map>
 
@@ -66,7 +67,12 @@ std::vector<SpectralCurve> spectral_radius_curves(const std::vector<std::string>
             SpectralCurve curve{id, scheme, probe->predicted_limit(), {}};
             for (int k = 0; k <= 40; ++k) {
                 const double dt = probe->predicted_limit() / 30.0 * std::pow(90.0, k / 40.0);
-                curve.points.push_back({dt, spectral_radius(*scene, step_jacobian(*scene, scheme, dt))});
+                double rho = std::numeric_limits<double>::infinity();  // a scheme that throws has no bounded step map
+                try {
+                    rho = spectral_radius(*scene, step_jacobian(*scene, scheme, dt));
+                } catch (...) {
+                }
+                curve.points.push_back({dt, rho});
             }
             curves.push_back(std::move(curve));
         }

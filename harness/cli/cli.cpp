@@ -1,6 +1,7 @@
 #include "harness/cli/cli.hpp"
 
 #include "harness/cli/verb.hpp"
+#include "harness/io/output_files.hpp"
 #include "harness/io/plugin.hpp"
 
 #include "build_info.hpp"
@@ -43,8 +44,8 @@ int run_cli_arguments(const std::vector<std::string>& arguments, std::ostream& o
     bool version = false;
     app.add_flag("--version", version, "print the version, commit, compiler and flags, and exit");
     std::map<std::string, std::pair<CLI::App*, std::unique_ptr<Verb>>> verbs;
-    const auto names = VerbRegistry::instance().ids();
-    for (const auto& name : names) {
+    const std::vector<std::string> names = user_verbs();
+    for (const auto& name : VerbRegistry::instance().ids()) {
         const auto& entry = VerbRegistry::instance().at(name, "command");
         auto verb = entry.make();
         CLI::App* command = app.add_subcommand(name, entry.summary);
@@ -66,10 +67,11 @@ int run_cli_arguments(const std::vector<std::string>& arguments, std::ostream& o
         const auto chosen = std::find_if(verbs.begin(), verbs.end(), [](const auto& v) { return v.second.first->parsed(); });
         if (chosen == verbs.end()) throw InputError("no command given; valid commands: " + join(names, ", "));
         Verb& verb = *chosen->second.second;
+        const bool internal = internal_verb(chosen->first);
         const auto load = [&] {
             for (const auto& plugin : plugins) {
                 const auto ids = load_plugin(plugin);
-                err << "rotbench: loaded " << join(ids, ", ") << " from " << plugin << "\n";
+                if (!internal) err << "rotbench: loaded " << join(ids, ", ") << " from " << plugin << "\n";
             }
         };
         const Invocation invocation{arguments, command_line, out, err, resuming, load};
@@ -91,6 +93,12 @@ int run_cli_arguments(const std::vector<std::string>& arguments, std::ostream& o
     } catch (const std::filesystem::filesystem_error& e) {  // an output path that is not a writable directory
         err << "rotbench: " << e.what() << "\n";
         return 2;
+    } catch (const OutputError& e) {  // a full disk once the work had started: what is finished is kept
+        err << "rotbench: " << e.what() << "\n";
+        return 3;
+    } catch (const std::exception& e) {  // a bug of rotbench's: said in one line, not an abort
+        err << "rotbench: internal error: " << e.what() << "\n";
+        return 4;
     }
 }
 

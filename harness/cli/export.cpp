@@ -79,7 +79,10 @@ public:
         const double dt = parse_positive(o_.dt, "--dt");
         const auto scene = o_.make();
         o_.check();
-        o_.write(scheme_trajectory_csv(*scene, o_.scheme, dt, o_.samples), how.out);
+        std::string stopped;
+        o_.write(scheme_trajectory_csv(*scene, o_.scheme, dt, o_.samples, &stopped), how.out);
+        if (!stopped.empty())
+            how.err << "rotbench: " << o_.scheme << " " << stopped << "; " << o_.out << " holds the trajectory up to there\n";
         return 0;
     }
 

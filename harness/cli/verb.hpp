@@ -38,6 +38,18 @@ public:
 
 using VerbRegistry = Registry<Verb>;
 
+// A verb whose name starts with "__" is rotbench's own (the isolated run's worker): hidden
+// from help and error messages, and quiet on stderr, which its parent reads.
+inline bool internal_verb(const std::string& name) { return name.rfind("__", 0) == 0; }
+
+// The verbs a user may give, in the registry's order.
+inline std::vector<std::string> user_verbs() {
+    std::vector<std::string> names;
+    for (const auto& name : VerbRegistry::instance().ids())
+        if (!internal_verb(name)) names.push_back(name);
+    return names;
+}
+
 template <class V>
 struct RegisterVerb {
     RegisterVerb(std::string name, std::string summary) {

@@ -1,11 +1,14 @@
 #include "harness/engine/export.hpp"
 
+#include "harness/engine/interrupt.hpp"
 #include "harness/engine/run.hpp"
 #include "references/odeint_reference.hpp"
 #include "harness/io/output_files.hpp"
 #include "schemes/quaternion.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
 
 namespace rotbench {
 namespace {
@@ -40,7 +43,8 @@ std::string reference_csv(const Scene& scene, int samples) {
         }
         return csv;
     }
-    const Trajectory trajectory = integrate_scene(scene, times, OdeMethod::fehlberg78);
+    const Trajectory trajectory =
+        integrate_scene(scene, times, OdeMethod::fehlberg78, reference_tolerance, [] { return !interrupt_signal(); });
     for (std::size_t k = 0; k < times.size(); ++k) {
         const ReferenceState s = trajectory.state(k, 0);
         b.orientation.set(0, s.q);
@@ -52,20 +56,32 @@ std::string reference_csv(const Scene& scene, int samples) {
     return csv;
 }
 
-std::string scheme_trajectory_csv(const Scene& scene, const std::string& scheme_id, double dt, int samples) {
+std::string scheme_trajectory_csv(const Scene& scene, const std::string& scheme_id, double dt, int samples, std::string* stopped) {
     if (samples < 1) throw InputError("--samples must be at least 1");
     const std::int64_t steps = step_count(scene.t_end(), dt);
     const std::int64_t stride = std::max<std::int64_t>(1, (steps + samples - 1) / samples);
     auto scheme = SchemeRegistry::instance().at(scheme_id, "scheme").make();
     Bodies b = scene.initial_state();
     std::string csv = std::string(trajectory_header) + "\n" + row(scene, 0.0, b);
-    std::int64_t evals = 0;
-    simulate(scene, *scheme, b, dt, steps, evals, [&](std::int64_t n, double t, const Bodies& state) {
-        const Quat q = state.orientation[0];
-        if (!q.coeffs().allFinite() || !state.omega[0].allFinite()) return false;
-        if (n % stride == 0 || n == steps) csv += row(scene, t, state);
-        return true;
-    });
+    std::int64_t evals = 0, last = 0;
+    std::string why;
+    try {
+        simulate(scene, *scheme, b, dt, steps, evals, [&](std::int64_t n, double t, const Bodies& state) {
+            const Quat q = state.orientation[0];
+            if (!q.coeffs().allFinite() || !state.omega[0].allFinite() || !std::isfinite(scene.energy(state))) {
+                why = fmt::format("blew up at step {} (t = {:g} s)", n, t);
+                return false;
+            }
+            last = n;
+            if (n % stride == 0 || n == steps) csv += row(scene, t, state);
+            return true;
+        });
+    } catch (const std::exception& e) {
+        why = fmt::format("threw after step {}: {}", last, e.what());
+    } catch (...) {
+        why = fmt::format("threw after step {}", last);
+    }
+    if (stopped) *stopped = why;
     return csv;
 }
 

@@ -16,7 +16,9 @@ inline constexpr const char* trajectory_header = "t,qw,qx,qy,qz,wx,wy,wz,wbx,wby
 std::string reference_csv(const Scene& scene, int samples);
 
 // A scheme's run at step dt, every step, or every k-th step so that at most `samples` + 1
-// rows are written. A run that blows up ends at its last finite step.
-std::string scheme_trajectory_csv(const Scene& scene, const std::string& scheme_id, double dt, int samples);
+// rows are written. A run that blows up or throws ends at its last finite step; why it
+// stopped goes to *stopped (empty when it did not).
+std::string scheme_trajectory_csv(const Scene& scene, const std::string& scheme_id, double dt, int samples,
+                                  std::string* stopped = nullptr);
 
 }  // namespace rotbench

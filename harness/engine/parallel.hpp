@@ -3,6 +3,8 @@
 // after all have finished, on the calling thread.
 #pragma once
 
+#include "harness/engine/machine.hpp"
+
 #include <algorithm>
 #include <atomic>
 #include <cstddef>
@@ -12,9 +14,6 @@
 #include <vector>
 
 namespace rotbench {
-
-// The cores this machine offers (at least 1): the default number of threads.
-inline int core_count() { return static_cast<int>(std::max(1u, std::thread::hardware_concurrency())); }
 
 template <class Work>
 void parallel_for(std::size_t count, int jobs, Work&& work) {

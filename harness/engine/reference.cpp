@@ -1,5 +1,6 @@
 #include "harness/engine/reference.hpp"
 
+#include "harness/engine/interrupt.hpp"
 #include "harness/engine/shared_trajectory.hpp"
 #include "harness/io/reference_cache.hpp"
 #include "references/odeint_reference.hpp"
@@ -50,7 +51,8 @@ std::shared_ptr<const Trajectory> odeint_reference(const Scene& scene, double dt
         if (auto cached = load_cached(scene_id, key)) return std::move(*cached);
         std::vector<double> times(static_cast<std::size_t>(steps) + 1);
         for (std::size_t k = 0; k < times.size(); ++k) times[k] = static_cast<double>(k) * dt;  // as the run loop
-        Trajectory trajectory = integrate_scene(scene, times, OdeMethod::fehlberg78);
+        Trajectory trajectory =
+            integrate_scene(scene, times, OdeMethod::fehlberg78, reference_tolerance, [] { return !interrupt_signal(); });
         store_cached(scene_id, key, trajectory);
         return trajectory;
     });

@@ -44,6 +44,9 @@ RunResult run_reversal(const RunSpec& requested) {
     } catch (const std::exception& e) {
         result.failure = std::string("threw: ") + e.what();
         failed = true;
+    } catch (...) {  // a plug-in may throw anything
+        result.failure = "threw an exception that is not a std::exception";
+        failed = true;
     }
     if (interrupt_signal()) {
         result.interrupted = true;

@@ -286,6 +286,9 @@ RunResult run_trajectory(const RunSpec& requested, const RunOptions& options) {
     } catch (const std::exception& e) {
         result.failure = std::string("threw: ") + e.what();
         unstable = true;
+    } catch (...) {  // a plug-in may throw anything
+        result.failure = "threw an exception that is not a std::exception";
+        unstable = true;
     }
 
     CpuTiming cpu{nan, nan, nan, 0, {}};

@@ -73,6 +73,10 @@ struct RunOptions {
     bool measure_time = true;  // off in tests: the timing run repeats the whole simulation
     int series_samples = 0;    // > 0: record about this many energy samples (and t = 0),
                                // in scenes that report an energy series
+    // The limits of a plug-in's run in its worker process (harness/engine/isolation.hpp);
+    // 0: derived from the run and the machine.
+    double run_timeout = 0;
+    std::size_t run_memory_mb = 0;
 };
 
 // Runs and measures; never throws for a failing scheme (the failure is recorded), but

@@ -1,12 +1,37 @@
 #include "harness/engine/sweep.hpp"
 
 #include "harness/engine/interrupt.hpp"
+#include "harness/engine/isolation.hpp"
+#include "harness/engine/machine.hpp"
 #include "harness/engine/parallel.hpp"
+#include "references/trajectory.hpp"
+
+#include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 #include <mutex>
 
 namespace rotbench {
+
+namespace {
+
+// A run keeps its reference at every step in memory (Trajectory::width doubles per body-step;
+// the Odeint one is also what the reference cache stores). A plan whose reference would not
+// fit in half the machine is refused before it starts, not killed by the system halfway.
+void check_reference_fits(const Scene& scene, double dt, std::int64_t steps) {
+    if (!scene.has_reference()) return;
+    const double bodies = static_cast<double>(scene.initial_state().size());
+    const double per_step = static_cast<double>(Trajectory::width * sizeof(double));
+    const double bytes = (static_cast<double>(steps) + 1.0) * bodies * per_step;
+    if (bytes <= memory_bytes() / 2) return;
+    throw InputError(fmt::format("{} at dt {:g}: its reference would take {:.0f} GB of memory ({:.3g} steps x {:g} bodies x {:g} B), "
+                                 "more than half of this machine's {:.0f} GB; use a larger --dt or a shorter --t-end",
+                                 scene.params.owner(), dt, std::ceil(bytes / 1e9), static_cast<double>(steps), bodies, per_step,
+                                 memory_bytes() / 1e9));
+}
+
+}  // namespace
 
 std::vector<RunSpec> plan_sweep(const SweepSpec& spec) {
     const auto& scenes = SceneRegistry::instance();
@@ -29,7 +54,7 @@ std::vector<RunSpec> plan_sweep(const SweepSpec& spec) {
         const auto scene = make_scene(scene_id, with_t_end);  // validates every override
         const double t_end = scene->t_end();
         const auto dts = !spec.dts.empty() ? spec.dts : spec.quick ? scene->quick_dts() : scene->default_dts();
-        for (double dt : dts) step_count(t_end, dt);  // validates dt against t_end
+        for (double dt : dts) check_reference_fits(*scene, dt, step_count(t_end, dt));  // validates dt against t_end
         for (const auto& scheme_id : scheme_ids)
             for (double dt : dts) plan.push_back({scene_id, scheme_id, dt, t_end, overrides});
     }
@@ -42,9 +67,10 @@ std::vector<RunResult> run_sweep(const std::vector<RunSpec>& plan, const RunOpti
     std::mutex done_mutex;
     // run_one records a failing scheme; what it throws is bad input (none expected after
     // plan_sweep), rethrown once every run has finished.
+    const IsolationLimits limits{options.run_timeout, options.run_memory_mb ? options.run_memory_mb : isolation_memory(jobs)};
     parallel_for(plan.size(), jobs, [&](std::size_t i) {
         if (interrupt_signal()) return;
-        results[i] = run_one(plan[i], options);
+        results[i] = isolated(plan[i].scheme) ? run_isolated(plan[i], options, limits) : run_one(plan[i], options);
         if (results[i].interrupted) return;
         std::lock_guard lock(done_mutex);
         if (on_done) on_done(i, results[i]);

@@ -5,6 +5,7 @@
 #include "harness/io/series_csv.hpp"
 #include "harness/io/output_files.hpp"
 #include "harness/io/results_csv.hpp"
+#include "harness/io/run_record.hpp"
 
 #include <cerrno>
 #include <cstring>
@@ -42,26 +43,9 @@ struct Records {
 Records read_records(const fs::path& file, const std::vector<RunSpec>& plan) {
     Records found;
     const std::string text = fs::exists(file) ? read_input_file(file, "the journal") : "";
-    std::size_t at = 0;
-    while (at < text.size()) {
-        const std::size_t line_end = text.find('\n', at);
-        if (line_end == std::string::npos) break;
-        std::istringstream header(text.substr(at, line_end - at));
-        std::string word;
-        std::size_t index = 0, lengths[3] = {0, 0, 0};
-        if (!(header >> word >> index >> lengths[0] >> lengths[1] >> lengths[2]) || word != "run") break;
-        const std::size_t body = line_end + 1;
-        const std::size_t end = body + lengths[0] + lengths[1] + lengths[2];
-        const std::string trailer = fmt::format("end {}\n", index);
-        if (end + trailer.size() > text.size() || text.compare(end, trailer.size(), trailer) != 0) break;
-        const std::string results = text.substr(body, lengths[0]), runs = text.substr(body + lengths[0], lengths[1]);
-        auto parsed = parse_results(results, runs, {}, file.string());
-        if (parsed.size() != 1) throw InputError(file.string() + ": a record that does not hold one run");
-        if (lengths[2] > 0)  // again, with the series under the name the run gives it
-            parsed = parse_results(results, runs,
-                                   {{series_file_name(parsed.front()), text.substr(body + lengths[0] + lengths[1], lengths[2])}},
-                                   file.string());
-        const RunSpec& got = parsed.front().spec;
+    RunRecords records = parse_run_records(text, file.string());
+    for (auto& [index, run] : records.runs) {
+        const RunSpec& got = run.spec;
         if (index >= plan.size())
             throw InputError(fmt::format("{}: a record of run {}, and the plan has {} runs", file.string(), index, plan.size()));
         const RunSpec& want = plan[index];
@@ -70,10 +54,9 @@ Records read_records(const fs::path& file, const std::vector<RunSpec>& plan) {
                                          index, got.scene, got.scheme, format_number(got.dt), want.scene, want.scheme,
                                          format_number(want.dt)));
         if (found.runs.count(index)) throw InputError(fmt::format("{}: run {} is recorded twice", file.string(), index));
-        found.runs.emplace(index, std::move(parsed.front()));
-        at = end + trailer.size();
-        found.whole_length = at;
+        found.runs.emplace(index, std::move(run));
     }
+    found.whole_length = records.whole_length;
     return found;
 }
 
@@ -131,10 +114,7 @@ fs::path Journal::working_directory(const fs::path& out_dir) {
 std::map<std::size_t, RunResult> Journal::finished() const { return read_records(journal_dir(out_.path()) / "runs", plan_).runs; }
 
 void Journal::record(std::size_t plan_index, const RunResult& result) const {
-    const std::string results = results_csv({result}), runs = runs_csv({result});
-    const std::string series = result.series.empty() ? "" : series_csv(result);
-    const std::string record = fmt::format("run {} {} {} {}\n{}{}{}end {}\n", plan_index, results.size(), runs.size(),
-                                           series.size(), results, runs, series, plan_index);
+    const std::string record = run_record(plan_index, result);
     // One write(2) in append mode per record: records of several threads do not interleave.
     const fs::path file = journal_dir(out_.path()) / "runs";
     const int fd = ::open(file.c_str(), O_WRONLY | O_APPEND | O_CREAT | O_CLOEXEC, 0644);

@@ -10,11 +10,12 @@
 #include <filesystem>
 #include <fmt/format.h>
 #include <fstream>
+#include <string_view>
 
 namespace rotbench {
 namespace {
 
-constexpr char magic[8] = {'R', 'B', 'T', 'R', 'J', '0', '0', '1'};
+constexpr char magic[8] = {'R', 'B', 'T', 'R', 'J', '0', '0', '2'};  // 002: with a checksum
 
 // A trajectory is only as reproducible as the build that computed it: another compiler, other
 // flags or other code round differently. The stored key therefore names the build, and a
@@ -31,7 +32,7 @@ std::filesystem::path directory() {
     return "";
 }
 
-std::uint64_t fnv1a(const std::string& text) {
+std::uint64_t fnv1a(std::string_view text) {
     std::uint64_t h = 14695981039346656037ull;
     for (unsigned char c : text) h = (h ^ c) * 1099511628211ull;
     return h;
@@ -53,31 +54,7 @@ bool build_is_pinned() {
     return commit != "unknown" && !commit.ends_with("-dirty");
 }
 
-std::optional<Trajectory> load_cached(const std::string& scene_id, const std::string& run_key) {
-    const std::string key = stored_key(run_key);
-    const auto path = file_for(scene_id, key);
-    if (path.empty()) return std::nullopt;
-    std::ifstream in(path, std::ios::binary);
-    char head[sizeof magic];
-    std::uint64_t key_size = 0, bodies = 0, count = 0;
-    if (!in.read(head, sizeof head) || std::memcmp(head, magic, sizeof magic) != 0) return std::nullopt;
-    if (!in.read(reinterpret_cast<char*>(&key_size), sizeof key_size) || key_size != key.size()) return std::nullopt;
-    std::string stored(key_size, '\0');
-    if (!in.read(stored.data(), static_cast<std::streamsize>(key_size)) || stored != key) return std::nullopt;
-    if (!in.read(reinterpret_cast<char*>(&bodies), sizeof bodies) || !in.read(reinterpret_cast<char*>(&count), sizeof count))
-        return std::nullopt;
-    Trajectory t;
-    t.bodies = bodies;
-    t.values.resize(count);
-    if (!in.read(reinterpret_cast<char*>(t.values.data()), static_cast<std::streamsize>(count * sizeof(double))))
-        return std::nullopt;
-    return t;
-}
-
-void store_cached(const std::string& scene_id, const std::string& run_key, const Trajectory& trajectory) {
-    const std::string key = stored_key(run_key);
-    const auto path = file_for(scene_id, key);
-    if (path.empty()) return;
+std::string encode_trajectory(const std::string& key, const Trajectory& trajectory) {
     std::string bytes(magic, sizeof magic);
     auto put = [&](const void* p, std::size_t n) { bytes.append(static_cast<const char*>(p), n); };
     const std::uint64_t key_size = key.size(), bodies = trajectory.bodies, count = trajectory.values.size();
@@ -86,9 +63,58 @@ void store_cached(const std::string& scene_id, const std::string& run_key, const
     put(&bodies, sizeof bodies);
     put(&count, sizeof count);
     put(trajectory.values.data(), count * sizeof(double));
+    const std::uint64_t sum = fnv1a(bytes);
+    put(&sum, sizeof sum);
+    return bytes;
+}
+
+std::optional<Trajectory> decode_trajectory(const std::string& bytes, const std::string& key) {
+    // Every size is checked against the bytes there are before anything is allocated: a
+    // damaged file is a miss, never a huge allocation or a read past its end.
+    std::size_t at = 0;
+    const auto take = [&](void* into, std::size_t n) {
+        if (bytes.size() - at < n) return false;
+        std::memcpy(into, bytes.data() + at, n);
+        at += n;
+        return true;
+    };
+    char head[sizeof magic];
+    std::uint64_t key_size = 0, bodies = 0, count = 0, sum = 0;
+    if (!take(head, sizeof head) || std::memcmp(head, magic, sizeof magic) != 0) return std::nullopt;
+    if (!take(&key_size, sizeof key_size) || key_size != key.size() || bytes.compare(at, key_size, key) != 0) return std::nullopt;
+    at += key_size;
+    if (!take(&bodies, sizeof bodies) || !take(&count, sizeof count)) return std::nullopt;
+    if (bodies == 0 || count % (bodies * Trajectory::width) != 0) return std::nullopt;
+    if (count > (bytes.size() - at) / sizeof(double) || bytes.size() - at != count * sizeof(double) + sizeof sum) return std::nullopt;
+    Trajectory t;
+    t.bodies = bodies;
+    t.values.resize(count);
+    take(t.values.data(), count * sizeof(double));
+    take(&sum, sizeof sum);
+    if (sum != fnv1a(std::string_view(bytes).substr(0, at - sizeof sum))) return std::nullopt;  // a flipped bit anywhere
+    return t;
+}
+
+std::optional<Trajectory> load_cached(const std::string& scene_id, const std::string& run_key) {
+    const std::string key = stored_key(run_key);
+    const auto path = file_for(scene_id, key);
+    if (path.empty()) return std::nullopt;
+    std::error_code error;
+    const auto size = std::filesystem::file_size(path, error);
+    if (error || size > max_cached_bytes + (1 << 20)) return std::nullopt;
+    std::ifstream in(path, std::ios::binary);
+    std::string bytes(size, '\0');
+    if (!in.read(bytes.data(), static_cast<std::streamsize>(size))) return std::nullopt;
+    return decode_trajectory(bytes, key);
+}
+
+void store_cached(const std::string& scene_id, const std::string& run_key, const Trajectory& trajectory) {
+    const std::string key = stored_key(run_key);
+    const auto path = file_for(scene_id, key);
+    if (path.empty() || trajectory.values.size() * sizeof(double) > max_cached_bytes) return;
     try {
         std::filesystem::create_directories(path.parent_path());
-        write_file_atomically(path, bytes);
+        write_file_atomically(path, encode_trajectory(key, trajectory));
     } catch (const std::exception&) {
         // An unwritable cache costs time, not correctness.
     }

@@ -8,6 +8,7 @@
 
 #include "references/trajectory.hpp"
 
+#include <cstddef>
 #include <optional>
 #include <string>
 
@@ -18,7 +19,15 @@ namespace rotbench {
 std::string cache_build_key();
 bool build_is_pinned();
 
+// Larger trajectories are not kept: 512 MiB, 9.6 million body-steps of 56 bytes.
+inline constexpr std::size_t max_cached_bytes = std::size_t(1) << 29;
+
 std::optional<Trajectory> load_cached(const std::string& scene_id, const std::string& key);
 void store_cached(const std::string& scene_id, const std::string& key, const Trajectory& trajectory);
+
+// The file format: magic, key, sizes, values, and an FNV-1a checksum of all of it. A file that
+// is damaged anywhere (truncated, a flipped bit, sizes that do not add up) decodes to nothing.
+std::string encode_trajectory(const std::string& key, const Trajectory& trajectory);
+std::optional<Trajectory> decode_trajectory(const std::string& bytes, const std::string& key);
 
 }  // namespace rotbench

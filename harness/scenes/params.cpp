@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
+#include <limits>
 
 namespace rotbench {
 
@@ -61,15 +62,19 @@ std::string Params::canonical() const {
     return out;
 }
 
+// Greater than 0, and a normal number: a denormal one has no finite inverse.
 double Params::positive(const std::string& key) const {
     const double v = number(key);
     require(v > 0.0, key, fmt::format("must be greater than 0, got {}", v));
+    require(v >= std::numeric_limits<double>::min(), key, fmt::format("{} is too small to compute with (denormal)", v));
     return v;
 }
 
 Vec3 Params::positive_vec3(const std::string& key) const {
     const Vec3 v = vec3(key);
     require(v.minCoeff() > 0.0, key, fmt::format("every component must be greater than 0, got {}, {}, {}", v.x(), v.y(), v.z()));
+    require(v.minCoeff() >= std::numeric_limits<double>::min(), key,
+            fmt::format("{} is too small to compute with (denormal)", v.minCoeff()));
     return v;
 }
 

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fmt/format.h>
 #include <functional>
 #include <stdexcept>
 
@@ -12,7 +13,21 @@ namespace rotbench {
 std::unique_ptr<Scene> make_scene(const std::string& id, const ParamOverrides& overrides) {
     auto scene = SceneRegistry::instance().at(id, "scene").make();
     scene->params.apply(overrides);
-    scene->prepare();
+    try {
+        scene->prepare();
+    } catch (const InputError&) {
+        throw;
+    } catch (const std::exception& e) {  // e.g. a closed form's domain error for extreme values
+        throw InputError(id + ": these parameters give no motion rotbench can follow (" + e.what() + ")");
+    }
+    // Values so large that the energy or the angular momentum overflows would overflow the
+    // closed forms and the metrics too: refused here, before anything runs.
+    const Bodies b = scene->initial_state();
+    const double energy = scene->energy(b), momentum = total_angular_momentum(b).norm();
+    if (!(std::abs(energy) <= max_magnitude) || !(momentum <= max_magnitude))
+        throw InputError(fmt::format("{}: the initial energy ({:g} J) or angular momentum ({:g} kg m^2/s) is not finite or exceeds "
+                                     "{:g}: the parameters overflow what the closed forms and the metrics can hold",
+                                     id, energy, momentum, max_magnitude));
     return scene;
 }
 

@@ -75,7 +75,9 @@ struct RegisterScene {
     }
 };
 
-// The scene `id` with its parameters overridden and validated (InputError on bad input).
+// The scene `id` with its parameters overridden and validated (InputError on bad input,
+// including an initial energy or angular momentum beyond max_magnitude).
+inline constexpr double max_magnitude = 1e100;
 std::unique_ptr<Scene> make_scene(const std::string& id, const ParamOverrides& overrides = {});
 
 // dt_max, dt_max/2, ..., rungs values in all, then `extra` (published steps) not already in.

@@ -1,0 +1,44 @@
+// `rotbench __run`: the worker of an isolated run (harness/engine/isolation.hpp). Not for
+// users: rotbench starts it with the run's spec and reads the run back from its output.
+#include "harness/cli/verb.hpp"
+#include "harness/engine/interrupt.hpp"
+#include "harness/engine/run.hpp"
+#include "harness/io/csv.hpp"
+#include "harness/io/results_csv.hpp"
+#include "harness/io/run_record.hpp"
+
+#include <unistd.h>
+
+namespace rotbench {
+namespace {
+
+class WorkerVerb final : public Verb {
+public:
+    void add_options(CLI::App& command) override {
+        command.group("");  // hidden from --help
+        command.add_option("--spec", spec_, "the run, as a record of runs.csv")->required();
+        command.add_option("--series", series_, "energy samples")->required();
+        command.add_flag("--untimed", untimed_, "no timing repeats");
+    }
+    int run(const Invocation& how) override {
+        const std::string runs = "scene,scheme,kind,dt,t_end,params,metrics,timing,failure\n" + spec_;
+        auto specs = parse_results("scene,scheme,dt,metric,value\n", runs.back() == '\n' ? runs : runs + "\n", {}, "the worker's spec");
+        RunSpec spec = specs.at(0).spec;
+        const InterruptGuard guard;  // a signal ends the run at its next step, as in process
+        const RunResult r = run_one(spec, {.measure_time = !untimed_, .series_samples = series_});
+        if (r.interrupted) return 130;
+        how.out << run_record(0, r);
+        how.out.flush();
+        return how.out ? 0 : 3;
+    }
+
+private:
+    std::string spec_;
+    int series_ = 0;
+    bool untimed_ = false;
+};
+
+const RegisterVerb<WorkerVerb> registration("__run", "(internal) make one run and print it as a record");
+
+}  // namespace
+}  // namespace rotbench

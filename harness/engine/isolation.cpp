@@ -1,0 +1,182 @@
+#include "harness/engine/isolation.hpp"
+
+#include "harness/engine/interrupt.hpp"
+#include "harness/engine/machine.hpp"
+#include "harness/io/csv.hpp"
+#include "harness/io/output_files.hpp"
+#include "harness/io/plugin.hpp"
+#include "harness/io/results_csv.hpp"
+#include "harness/io/run_record.hpp"
+#include "harness/scenes/scene.hpp"
+
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <csignal>
+#include <cstring>
+#include <fcntl.h>
+#include <fmt/format.h>
+#include <poll.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace rotbench {
+namespace {
+
+std::string& worker() {
+    static std::string path;
+    return path;
+}
+
+// The spec as the worker reads it: the runs.csv record of a run without metrics. A record
+// names its t_end, so the scene's default (t_end 0 in a spec) is written out.
+std::string spec_text(const RunSpec& spec) {
+    RunResult r;
+    r.spec = spec;
+    if (!(r.spec.t_end > 0.0)) r.spec.t_end = make_scene(spec.scene, spec.params)->t_end();
+    const std::string csv = runs_csv({r});
+    return csv.substr(csv.find('\n') + 1);  // without the header
+}
+
+// What a non-blocking pipe holds now; false once it is at its end.
+bool drain(int fd, std::string& into, std::size_t keep) {
+    char buffer[1 << 16];
+    for (;;) {
+        const ssize_t n = ::read(fd, buffer, sizeof buffer);
+        if (n < 0 && errno == EINTR) continue;
+        if (n < 0) return errno == EAGAIN || errno == EWOULDBLOCK;
+        if (n == 0) return false;
+        into.append(buffer, static_cast<std::size_t>(n));
+        if (keep && into.size() > keep) into.erase(0, into.size() - keep);
+    }
+}
+
+}  // namespace
+
+void set_worker_executable(std::string path) { worker() = std::move(path); }
+const std::string& worker_executable() { return worker(); }
+
+bool isolated(const std::string& scheme) { return !worker().empty() && plugin_of(scheme) != nullptr; }
+
+double isolation_timeout(const RunSpec& spec) {
+    if (spec.kind == RunKind::stability) return 600.0;
+    ParamOverrides overrides = spec.params;
+    if (spec.t_end > 0.0) overrides.push_back({"t_end", {spec.t_end}});
+    const auto scene = make_scene(spec.scene, overrides);
+    const double body_steps = static_cast<double>(step_count(scene->t_end(), spec.dt)) * static_cast<double>(scene->initial_state().size());
+    const double ways = spec.kind == RunKind::reversal ? 2.0 : 1.0;
+    return 60.0 + 10.0 * 1e-5 * body_steps * ways;
+}
+
+std::size_t isolation_memory(int jobs) {
+    return static_cast<std::size_t>(std::max(1024.0, memory_bytes() / 2 / std::max(1, jobs) / (1 << 20)));
+}
+
+RunResult run_isolated(const RunSpec& spec, const RunOptions& options, const IsolationLimits& limits) {
+    RunResult failed{spec, {}, {}};
+    const auto fail = [&](const std::string& why) {
+        failed.failure = why;
+        failed.metrics = {{"unstable", 1.0}};
+        return failed;
+    };
+    const double seconds = limits.seconds > 0 ? limits.seconds : isolation_timeout(spec);
+    const std::size_t megabytes = limits.megabytes > 0 ? limits.megabytes : isolation_memory(1);
+
+    // Everything the child needs is built before fork: after it, only exec.
+    std::vector<std::string> args = {worker()};
+    for (const auto& p : loaded_plugins()) args.insert(args.end(), {"--plugin", p.path});
+    args.insert(args.end(), {"__run", "--spec", spec_text(spec), "--series", std::to_string(options.series_samples)});
+    if (!options.measure_time || !spec.timed) args.push_back("--untimed");
+    std::vector<char*> argv;
+    for (auto& a : args) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    int out[2], err[2];
+    if (::pipe2(out, O_CLOEXEC) != 0) return fail(std::string("could not start its worker: ") + std::strerror(errno));
+    if (::pipe2(err, O_CLOEXEC) != 0) {
+        ::close(out[0]), ::close(out[1]);
+        return fail(std::string("could not start its worker: ") + std::strerror(errno));
+    }
+    const rlim_t address_space = static_cast<rlim_t>(megabytes) << 20;
+    const pid_t pid = ::fork();
+    if (pid == 0) {
+        const rlimit limit{address_space, address_space};
+        ::setrlimit(RLIMIT_AS, &limit);
+        ::dup2(out[1], 1);
+        ::dup2(err[1], 2);
+        ::setpgid(0, 0);  // its own group: the terminal's Ctrl-C reaches the parent, which stops it
+        ::execv(argv[0], argv.data());
+        ::_exit(127);
+    }
+    ::close(out[1]);
+    ::close(err[1]);
+    if (pid < 0) {
+        ::close(out[0]), ::close(err[0]);
+        return fail(std::string("could not start its worker: ") + std::strerror(errno));
+    }
+    std::string text, errors;
+    ::fcntl(out[0], F_SETFL, O_NONBLOCK);
+    ::fcntl(err[0], F_SETFL, O_NONBLOCK);
+    const auto start = std::chrono::steady_clock::now();
+    bool timed_out = false, interrupted = false;
+    pollfd fds[2] = {{out[0], POLLIN, 0}, {err[0], POLLIN, 0}};
+    for (int open_fds = 2; open_fds > 0;) {
+        if (interrupt_signal()) {
+            interrupted = true;
+            break;
+        }
+        if (std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > seconds) {
+            timed_out = true;
+            break;
+        }
+        const int ready = ::poll(fds, 2, 100);  // a tenth of a second: signals and limits are looked at that often
+        if (ready < 0 && errno != EINTR) break;
+        for (int k = 0; k < 2 && ready > 0; ++k) {
+            if (fds[k].fd < 0 || !(fds[k].revents & (POLLIN | POLLHUP | POLLERR))) continue;
+            if (!drain(fds[k].fd, k == 0 ? text : errors, k == 0 ? 0 : 4096)) {
+                ::close(fds[k].fd);
+                fds[k].fd = -1;
+                --open_fds;
+            }
+        }
+    }
+    if (timed_out || interrupted) ::kill(pid, SIGKILL);
+    for (auto& f : fds)
+        if (f.fd >= 0) ::close(f.fd);
+    int status = 0;
+    while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+    }
+    if (interrupted) {
+        failed.interrupted = true;
+        return failed;
+    }
+    if (timed_out) return fail(fmt::format("exceeded the run time limit of {:g} s (--run-timeout); its worker was killed", seconds));
+    if (WIFSIGNALED(status))
+        return fail(fmt::format("crashed: signal {} ({}) in its worker process", WTERMSIG(status), ::strsignal(WTERMSIG(status))));
+    const auto last_line = [&] {
+        const auto end = errors.find_last_not_of("\n");
+        if (end == std::string::npos) return std::string();
+        const auto begin = errors.rfind('\n', end);
+        return ": " + errors.substr(begin == std::string::npos ? 0 : begin + 1, end - (begin == std::string::npos ? 0 : begin + 1) + 1);
+    };
+    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+        return fail(fmt::format("its worker exited with status {} without a result{}", WIFEXITED(status) ? WEXITSTATUS(status) : -1,
+                                last_line()));
+    RunRecords records;
+    try {
+        records = parse_run_records(text, "the worker's output");
+    } catch (const InputError& e) {
+        return fail(std::string("its worker's output was not a run: ") + e.what());
+    }
+    if (records.runs.size() != 1 || records.whole_length != text.size())
+        return fail("its worker's output was not one whole run" + last_line());
+    RunResult result = std::move(records.runs.front().second);
+    const double t_end = result.spec.t_end;  // the scene's, as a run in process records it
+    result.spec = spec;                      // with what a record does not carry
+    result.spec.t_end = t_end;
+    if (result.failure.find("bad_alloc") != std::string::npos)
+        result.failure += fmt::format(" (its worker's memory is limited to {} MB, --run-memory)", megabytes);
+    return result;
+}
+
+}  // namespace rotbench

@@ -1,0 +1,37 @@
+// Runs of plug-in schemes happen in a child process: a plug-in that crashes, aborts, exits,
+// loops forever or exhausts memory takes down only its own run, which is recorded as failed
+// with the signal or the limit named; the sweep goes on. Built-in schemes run in process.
+// The child is the rotbench executable itself (`rotbench --plugin ... __run ...`, which
+// loads the same plug-ins and hands its run back as a record on its standard output).
+#pragma once
+
+#include "harness/engine/run.hpp"
+
+#include <cstddef>
+#include <string>
+
+namespace rotbench {
+
+struct IsolationLimits {
+    double seconds = 0;        // wall time of one run; 0: derived from the run (isolation_timeout)
+    std::size_t megabytes = 0; // address space of the child; 0: derived from the machine (isolation_memory)
+};
+
+// The rotbench executable to start as the worker; empty (the default) runs every scheme in
+// process. main() sets it to its own executable; the tests set it to the built binary.
+void set_worker_executable(std::string path);
+const std::string& worker_executable();
+
+// Whether a scheme's runs go to a child process: it comes from a plug-in, and there is a worker.
+bool isolated(const std::string& scheme);
+
+// The default limits: ten times what a slow plug-in (10 us per body-step) would take, and a
+// minute more (ten minutes for a stability search); half of the machine's memory over `jobs`.
+double isolation_timeout(const RunSpec& spec);
+std::size_t isolation_memory(int jobs);
+
+// The run made by a worker. Never throws for the run's own failure; an interrupt (SIGINT,
+// SIGTERM) kills the worker and returns an interrupted result within a tenth of a second.
+RunResult run_isolated(const RunSpec& spec, const RunOptions& options, const IsolationLimits& limits);
+
+}  // namespace rotbench

@@ -1,0 +1,30 @@
+// Test plug-in: schemes that crash, abort, exit, hang, exhaust memory or throw a non-standard
+// exception. Each takes down only its own run: the worker process it is isolated in.
+#include "schemes/scheme.hpp"
+#include <csignal>
+#include <cstdlib>
+#include <vector>
+#include <thread>
+namespace {
+using namespace rotbench;
+int* volatile null_target = nullptr;  // read at run time: the store below is a real SIGSEGV
+template <int Mode> struct Bad {
+    struct Memory {};
+    static void start(const RigidBody&, Memory&) {}
+    static void predict(RigidBody&, Memory&, double) {
+        if constexpr (Mode == 0) *null_target = 1;
+        if constexpr (Mode == 1) std::abort();
+        if constexpr (Mode == 2) std::exit(7);
+        if constexpr (Mode == 3) for (;;) std::this_thread::sleep_for(std::chrono::seconds(1));
+        if constexpr (Mode == 4) { std::vector<std::vector<char>> hog; for (;;) hog.emplace_back(1 << 26, 'x'); }
+        if constexpr (Mode == 5) throw 42;
+    }
+    static void correct(RigidBody&, Memory&, double) {}
+};
+const RegisterScheme<Bad<0>> a("bad_segfault", "segfaults", "t", "", {.sound = false});
+const RegisterScheme<Bad<1>> b("bad_abort", "aborts", "t", "", {.sound = false});
+const RegisterScheme<Bad<2>> c("bad_exit", "exits", "t", "", {.sound = false});
+const RegisterScheme<Bad<3>> d("bad_hang", "hangs", "t", "", {.sound = false});
+const RegisterScheme<Bad<4>> e("bad_oom", "eats memory", "t", "", {.sound = false});
+const RegisterScheme<Bad<5>> f("bad_throw42", "throws 42", "t", "", {.sound = false});
+}

@@ -1,0 +1,124 @@
+// Plug-in runs in a worker process (harness/engine/isolation.hpp): a scheme that segfaults,
+// aborts, exits, throws what is not a std::exception, hangs or exhausts memory fails its own
+// runs, named, and the sweep goes on; an isolated run gives the numbers an in-process run
+// gives; a signal stops a sweep whose plug-in hangs at once.
+#include "harness/engine/isolation.hpp"
+#include "tests/cli_helpers.hpp"
+
+#include <catch2/catch.hpp>
+#include <cctype>
+#include <chrono>
+#include <csignal>
+#include <map>
+#include <thread>
+
+using namespace rotbench;
+using namespace rotbench::test;
+
+namespace {
+
+// The failure column of runs.csv, by scheme (one dt per scheme in these sweeps).
+std::map<std::string, std::string> failures(const fs::path& dir) {
+    const auto records = parse_csv(read(dir / "runs.csv"), "runs.csv");
+    std::map<std::string, std::string> by_scheme;
+    for (std::size_t i = 1; i < records.size(); ++i) by_scheme[records[i].fields.at(1)] = records[i].fields.at(8);
+    return by_scheme;
+}
+
+// The first child process of `parent` that /proc shows, waited for up to ten seconds.
+pid_t child_of(pid_t parent) {
+    for (int tries = 0; tries < 2000; ++tries) {
+        for (const auto& p : fs::directory_iterator("/proc")) {
+            if (!p.is_directory() || !std::isdigit(static_cast<unsigned char>(p.path().filename().string()[0]))) continue;
+            const std::string stat = read(p.path() / "stat");  // pid (comm) state ppid ...
+            const auto close = stat.rfind(')');
+            if (close == std::string::npos) continue;
+            std::istringstream fields(stat.substr(close + 2));
+            std::string state;
+            pid_t ppid = 0;
+            fields >> state >> ppid;
+            if (ppid == parent) return std::stoi(p.path().filename().string());
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+    return -1;
+}
+
+}  // namespace
+
+TEST_CASE("isolation: a plug-in that crashes, exits, hangs or eats memory fails only its own run, which names why") {
+    const fs::path dir = fresh_dir("isolation_crashes");
+    const Cli r = cli({"run", "--plugin", PLUGIN_CRASHING, "--scenes", "asymmetric_free", "--dt", "0.05", "--schemes",
+                       "bad_segfault,bad_abort,bad_exit,bad_throw42,bad_hang,bad_oom,direct", "--run-timeout", "2",
+                       "--run-memory", "256", "--jobs", "2", "--out", dir.string()});
+    INFO(r.err);
+    REQUIRE(r.status == 0);
+    const auto failed = failures(dir);
+    CHECK_THAT(failed.at("bad_segfault"), Catch::Contains("crashed: signal 11 (Segmentation fault)"));
+    CHECK_THAT(failed.at("bad_abort"), Catch::Contains("crashed: signal 6 (Aborted)"));
+    CHECK_THAT(failed.at("bad_exit"), Catch::Equals("its worker exited with status 7 without a result"));
+    CHECK_THAT(failed.at("bad_throw42"), Catch::Contains("threw an exception that is not a std::exception"));
+    CHECK_THAT(failed.at("bad_hang"), Catch::Contains("exceeded the run time limit of 2 s (--run-timeout)"));
+    CHECK_THAT(failed.at("bad_oom"), Catch::Contains("std::bad_alloc (its worker's memory is limited to 256 MB, --run-memory)"));
+    CHECK(failed.at("direct").empty());  // the built-in scheme beside them ran
+    CHECK_THAT(read(dir / "report.md"), Catch::Contains("bad_segfault"));
+    fs::remove_all(dir);
+}
+
+TEST_CASE("isolation: a plug-in scheme's run in a worker is the in-process run, bit for bit") {
+    const fs::path dir = fresh_dir("isolation_same");
+    const std::vector<std::string> sweep = {"run", "--plugin", PLUGIN_END_VELOCITY_ZVW, "--scenes", "asymmetric_free,torqued_cylinder",
+                                            "--quick", "--jobs", "2", "--out"};
+    auto isolated = sweep, in_process = sweep;
+    isolated.push_back((dir / "isolated").string());
+    in_process.push_back((dir / "in_process").string());
+    REQUIRE(cli(isolated).status == 0);
+    const std::string worker = worker_executable();
+    set_worker_executable("");  // no worker: every scheme runs in this process (whose plug-in is loaded)
+    in_process.erase(in_process.begin() + 1, in_process.begin() + 3);
+    const Cli local = cli(in_process);
+    set_worker_executable(worker);
+    REQUIRE(local.status == 0);
+    for (const char* f : {"results.csv", "runs.csv"}) {
+        INFO(f);
+        CHECK(without_timing(read(dir / "isolated" / f)) == without_timing(read(dir / "in_process" / f)));
+    }
+    CHECK_THAT(read(dir / "isolated" / "runs.csv"), Catch::Contains("zvw_end_velocity"));
+    fs::remove_all(dir);
+}
+
+TEST_CASE("isolation: SIGINT or SIGTERM stops a sweep whose plug-in hangs, and kills its worker") {
+    for (const int signal : {SIGINT, SIGTERM}) {
+        const fs::path dir = fresh_dir("isolation_signal");
+        const pid_t pid = ::fork();
+        if (pid == 0) {
+            if (!freopen("/dev/null", "w", stdout) || !freopen("/dev/null", "w", stderr)) _exit(126);
+            execl(ROTBENCH_EXE, ROTBENCH_EXE, "--plugin", PLUGIN_CRASHING, "run", "--schemes", "bad_hang", "--scenes",
+                  "asymmetric_free", "--dt", "0.05", "--run-timeout", "600", "--out", dir.c_str(), nullptr);
+            _exit(127);
+        }
+        while (!fs::exists(dir / "partial" / "plan")) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+        const pid_t worker = child_of(pid);  // started, and hanging
+        struct Reap {  // a failed check leaves neither hanging for ten minutes
+            pid_t sweep, worker;
+            ~Reap() {
+                if (sweep > 0 && ::kill(sweep, SIGKILL) == 0) ::waitpid(sweep, nullptr, 0);  // never kill(-1)
+                if (worker > 0) ::kill(worker, SIGKILL);
+            }
+        } reap{pid, worker};
+        REQUIRE(worker > 0);
+        const auto sent = std::chrono::steady_clock::now();
+        ::kill(pid, signal);
+        int status = 0;
+        ::waitpid(pid, &status, 0);
+        reap.sweep = -1;
+        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - sent).count();
+        CHECK(WIFEXITED(status));
+        CHECK(WEXITSTATUS(status) == 128 + signal);
+        // The parent looks at signals every 0.1 s; 5 s is far from the 600 s the worker would hang.
+        CHECK(seconds < 5.0);
+        CHECK_FALSE(fs::exists("/proc/" + std::to_string(worker)));  // killed and reaped, not left behind
+        reap.worker = -1;
+        fs::remove_all(dir);
+    }
+}
