@@ -24,6 +24,13 @@ void refuse_empty_values(const CLI::App& app) {
     for (const auto* sub : app.get_subcommands()) refuse_empty_values(*sub);
 }
 
+// A line break shown as \n, so that the message stays one line.
+std::string one_line_text(const std::string& text) {
+    std::string shown;
+    for (const char c : text) shown += c == '\n' ? std::string("\\n") : c == '\r' ? std::string("\\r") : std::string(1, c);
+    return shown;
+}
+
 std::string version_text() {
     return fmt::format("rotbench {} (commit {})\ncompiler {}, {} build\nflags {}\n", build_info::version, build_info::commit,
                        build_info::compiler, build_info::build_type, build_info::flags);
@@ -56,6 +63,11 @@ int run_cli_arguments(const std::vector<std::string>& arguments, std::ostream& o
     std::string command_line = "rotbench";
     for (int i = 1; i < argc; ++i) command_line += std::string(" ") + argv[i];
     try {
+        // The journal keeps the arguments one per line (for --resume), and every message is
+        // one line: an argument with a line break is refused before anything is written.
+        for (const auto& a : arguments)
+            if (a.find_first_of("\n\r") != std::string::npos)
+                throw InputError("an argument holds a line break: '" + one_line_text(a) + "'; rotbench takes none");
         if (argc > 1 && argv[1][0] != '-' && !verbs.count(argv[1]))
             throw InputError(std::string("unknown command '") + argv[1] + "'; valid commands: " + join(names, ", "));
         app.parse(argc, argv.data());

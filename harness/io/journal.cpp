@@ -68,7 +68,7 @@ Journal Journal::start(const OutputDir& out, const std::vector<std::string>& arg
                        const std::vector<RunSpec>& plan) {
     std::string command;
     for (const auto& a : arguments) {
-        if (a.find('\n') != std::string::npos) throw InputError("an argument holds a line break: '" + a + "'");
+        if (a.find('\n') != std::string::npos) throw InputError("an argument holds a line break");  // the CLI refuses them first
         command += a + "\n";
     }
     out.write("partial/command", command);
