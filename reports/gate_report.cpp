@@ -41,8 +41,6 @@ std::pair<std::string, std::string> file_and_line(const std::string& location) {
     return {location.substr(0, colon), location.substr(colon + 1)};
 }
 
-std::string number(double v) { return std::isfinite(v) ? format_number(v) : ""; }
-
 }  // namespace
 
 std::string gate_summary(const GateResult& result) {

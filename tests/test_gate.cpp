@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <catch2/catch.hpp>
+#include <sstream>
 
 using namespace rotbench;
 using namespace rotbench::test;
@@ -84,7 +85,7 @@ TEST_CASE("the default gate exits 0 on a sound build, with no_gyro's failures li
 }
 
 TEST_CASE("a plug-in that claims zvw's second order and delivers first fails the default gate on the order claim") {
-    const Cli r = binary({"gate", default_gate_without_timing(), "--plugin", PLUGIN_END_VELOCITY_ZVW});
+    const Cli r = binary({"gate", default_gate_without_timing(), "--plugin", PLUGIN_END_VELOCITY_ZVW, "--schemes", "zvw_end_velocity"});
     CHECK(r.status == 1);
     CHECK_THAT(r.out, Catch::Contains("FAIL asymmetric_free/zvw_end_velocity: zvw_end_velocity: order_without_torque on "
                                       "asymmetric_free: observed order 1.00"));
@@ -94,18 +95,47 @@ TEST_CASE("a plug-in that claims zvw's second order and delivers first fails the
 }
 
 TEST_CASE("the q^n-frame Fincham leapfrog fails the default gate on its order claims") {
-    const Cli r = binary({"gate", default_gate_without_timing(), "--plugin", PLUGIN_QN_FRAME_FINCHAM});
+    const Cli r = binary({"gate", default_gate_without_timing(), "--plugin", PLUGIN_QN_FRAME_FINCHAM, "--schemes", "fincham_qn_frame"});
     CHECK(r.status == 1);
     CHECK_THAT(r.out, Catch::Contains("FAIL asymmetric_free/fincham_qn_frame: fincham_qn_frame: order_without_torque"));
     CHECK_THAT(r.out, Catch::Contains("FAIL dipole_top/fincham_qn_frame: fincham_qn_frame: order_with_torque"));
 }
 
 TEST_CASE("a plug-in that claims nothing gets the generic sanity checks and a warning") {
-    const Cli r = binary({"gate", default_gate_without_timing(), "--plugin", PLUGIN_CLAIMS_NOTHING});
+    const Cli r = binary({"gate", default_gate_without_timing(), "--plugin", PLUGIN_CLAIMS_NOTHING, "--schemes", "claims_nothing"});
     CHECK(r.status == 0);  // a sound scheme passes them
     CHECK_THAT(r.out, Catch::Contains("WARNING claims_nothing registers no claims"));
     CHECK_THAT(r.out, Catch::Contains("PASS asymmetric_free/claims_nothing: claims_nothing: sanity_order"));
     CHECK_THAT(r.out, Catch::Contains("PASS tumbling_brick/claims_nothing: claims_nothing: sanity_momentum"));
+}
+
+TEST_CASE("gate --schemes holds only the schemes named to the file's claims and checks") {
+    const Cli all = binary({"gate", default_gate_without_timing()});  // the real binary: no test-only schemes
+    const Cli two = binary({"gate", default_gate_without_timing(), "--schemes", "zvw,no_gyro"});
+    REQUIRE(all.status == 0);
+    CHECK(two.status == 0);  // no_gyro's expected failures are still expected
+    // Every verdict line of the two is one of the whole gate's, and every one of the whole
+    // gate's verdicts on zvw or no_gyro is there.
+    const auto verdicts = [](const std::string& out, bool only_two) {
+        std::vector<std::string> lines;
+        std::istringstream in(out);
+        for (std::string line; std::getline(in, line);) {
+            const bool verdict = line.rfind("PASS ", 0) == 0 || line.rfind("FAIL ", 0) == 0 || line.rfind("XFAIL ", 0) == 0;
+            const auto slash = line.find('/'), colon = line.find(':');
+            if (!verdict || slash == std::string::npos || colon == std::string::npos) continue;
+            const std::string scheme = line.substr(slash + 1, colon - slash - 1);
+            if (!only_two || scheme == "zvw" || scheme == "no_gyro") lines.push_back(line);
+        }
+        std::sort(lines.begin(), lines.end());
+        return lines;
+    };
+    const auto mine = verdicts(two.out, false);
+    CHECK(mine.size() >= 6);
+    CHECK(mine == verdicts(all.out, true));
+    CHECK_THAT(two.out, Catch::Contains("XFAIL"));
+    const Cli unknown = binary({"gate", default_gate_without_timing(), "--schemes", "zvw,nonesuch"});
+    CHECK(unknown.status == 2);
+    CHECK_THAT(unknown.err, Catch::Contains("unknown scheme 'nonesuch'"));
 }
 
 TEST_CASE("gate: a check marked as expected to fail is fine when it fails, and fails the gate when it passes") {

@@ -48,6 +48,7 @@ public:
         command.add_option("--results", results_, "DIR: judge the runs in DIR (e.g. merged shards) instead of running them");
         command.add_option("--baseline", baseline_, "DIR: also fail on regressions against the runs in DIR (as rotbench compare)");
         command.add_option("--shard", shard_, "K/N: run only the K-th of N slices of the gate's runs (judge the merge with --results)");
+        command.add_option("--schemes", schemes_, "comma list of scheme ids: gate only these (default: all the file names)");
         command.add_option("--jobs", jobs_, "runs in parallel (results do not depend on it)")->check(CLI::Range(1, max_jobs));
         command.add_option("--run-timeout", run_timeout_, "SECONDS: a plug-in's run is stopped after this long");
         command.add_option("--run-memory", run_memory_, "MB: the memory a plug-in's run may take")->check(CLI::Range(64, 1 << 30));
@@ -55,7 +56,8 @@ public:
     }
 
     int run(const Invocation& how) override {
-        const GateFile file = load_gate(file_);
+        GateFile file = load_gate(file_);
+        if (!schemes_.empty()) file = only_schemes(std::move(file), parse_id_list(schemes_, SchemeRegistry::instance(), "scheme"));
         const GatePlan plan = plan_gate(file);
         const PlanSlice slice = slice_plan(plan.runs, shard_);
         if (slice.shard && out_.empty()) throw InputError("--shard needs --out: a slice's runs are only worth their files");
@@ -126,7 +128,7 @@ public:
     }
 
 private:
-    std::string file_, junit_, summary_, out_, results_, shard_, baseline_, run_timeout_;
+    std::string file_, junit_, summary_, out_, results_, shard_, baseline_, run_timeout_, schemes_;
     int run_memory_ = 0;
     int jobs_ = core_count();
     bool overwrite_ = false;

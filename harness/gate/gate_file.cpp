@@ -217,6 +217,16 @@ GateFile gate_from_toml(const toml::table& root, const std::string& path) {
 
 }  // namespace
 
+GateFile only_schemes(GateFile file, const std::vector<std::string>& schemes) {
+    const auto chosen = [&](const std::string& id) { return std::find(schemes.begin(), schemes.end(), id) != schemes.end(); };
+    const auto keep_chosen = [&](std::vector<std::string>& ids) { std::erase_if(ids, [&](const auto& id) { return !chosen(id); }); };
+    keep_chosen(file.claims.schemes);
+    for (auto& check : file.checks) keep_chosen(check.schemes);
+    std::erase_if(file.checks, [](const GateCheck& c) { return c.schemes.empty(); });
+    std::erase_if(file.expected_failures, [&](const ExpectedFailure& e) { return !chosen(e.scheme); });
+    return file;
+}
+
 const std::vector<std::string>& claim_ids() {
     static const std::vector<std::string> ids = {"order_without_torque", "order_with_torque", "exact_without_torque",
                                                  "conserves_momentum",   "bounded_energy",    "time_reversible",

@@ -64,6 +64,10 @@ struct GateFile {
 // The claim checks a [claims] section makes, by id (what an [[expected_failure]] may name).
 const std::vector<std::string>& claim_ids();
 
+// The gate for `schemes` only (`rotbench gate --schemes`): the claims and checks of the other
+// schemes, and their expected failures, left out. A check left without a scheme goes.
+GateFile only_schemes(GateFile file, const std::vector<std::string>& schemes);
+
 // Reads and checks a gate file; every error names file, line and column (InputError).
 GateFile load_gate(const std::string& path);
 // The same for text already read; `name` stands for the file in messages.
