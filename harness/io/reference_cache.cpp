@@ -62,7 +62,7 @@ std::string encode_trajectory(const std::string& key, const Trajectory& trajecto
     bytes += key;
     put(&bodies, sizeof bodies);
     put(&count, sizeof count);
-    put(trajectory.values.data(), count * sizeof(double));
+    if (count > 0) put(trajectory.values.data(), count * sizeof(double));
     const std::uint64_t sum = fnv1a(bytes);
     put(&sum, sizeof sum);
     return bytes;
@@ -74,7 +74,7 @@ std::optional<Trajectory> decode_trajectory(const std::string& bytes, const std:
     std::size_t at = 0;
     const auto take = [&](void* into, std::size_t n) {
         if (bytes.size() - at < n) return false;
-        std::memcpy(into, bytes.data() + at, n);
+        if (n > 0) std::memcpy(into, bytes.data() + at, n);  // an empty trajectory's data() may be null
         at += n;
         return true;
     };

@@ -13,15 +13,14 @@ build=$(mkdir -p "$build" && cd "$build" && pwd)
 root=$(pwd)
 seconds=${2:-60}
 keep=${3:-}
-# ROTBENCH_TOML_NO_ASSERT: see harness/toml_input.hpp. toml++'s __builtin_unreachable paths
-# stay, and UBSan reports them.
-flags="-O1 -g -fno-omit-frame-pointer -fsanitize=address,undefined,fuzzer-no-link -fno-sanitize-recover=all -DROTBENCH_TOML_NO_ASSERT"
-cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_COMPILER=clang++-14 -DCMAKE_CXX_FLAGS="$flags" \
-  -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" -DROTBENCH_FUZZ=ON -DBUILD_TESTING=OFF > "$build.configure.log"
-cmake --build "$build" --target fuzz_config fuzz_gate fuzz_cli_values > "$build.build.log" 2>&1 || { tail -40 "$build.build.log"; exit 1; }
+# The `sanitize` preset of CMakePresets.json: clang, ASan, UBSan, fuzzing coverage (CI builds
+# the test suite in the same directory, so the fuzzers cost no build of their own).
+cmake --preset sanitize -B "$build" > "$build.configure.log"
+cmake --build "$build" --target fuzzers > "$build.build.log" 2>&1 || { tail -40 "$build.build.log"; exit 1; }
 status=0
-for target in config gate cli_values; do
+for target in $(cd tests/fuzz && ls fuzz_*.cpp | sed "s/^fuzz_//; s/\.cpp$//"); do
   corpus=$root/tests/fuzz/corpus/$target
+  mkdir -p "$corpus"
   scratch=$(mktemp -d)
   new=$scratch
   [ "$keep" = "--keep" ] && new=$corpus
