@@ -30,6 +30,10 @@ bool isolated(const std::string& scheme);
 double isolation_timeout(const RunSpec& spec);
 std::size_t isolation_memory(int jobs);
 
+// False in a build with AddressSanitizer, which reserves terabytes of address space for its
+// shadow memory at start: a worker there runs without the memory limit.
+bool memory_limit_enforced();
+
 // The run made by a worker. Never throws for the run's own failure; an interrupt (SIGINT,
 // SIGTERM) kills the worker and returns an interrupted result within a tenth of a second.
 RunResult run_isolated(const RunSpec& spec, const RunOptions& options, const IsolationLimits& limits);
