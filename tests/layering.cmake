@@ -23,7 +23,7 @@ foreach(probe IN LISTS PROBES)
   if(theirs GREATER own)
     if(status EQUAL 0)
       message(FATAL_ERROR "${layer} may not include ${header}, but ${target} built")
-    elseif(NOT output MATCHES "${header}: No such file or directory")
+    elseif(NOT output MATCHES "${header}: No such file or directory" AND NOT output MATCHES "'${header}' file not found")  # gcc, clang
       message(FATAL_ERROR "${target} failed for another reason than the missing ${header}:\n${output}")
     endif()
     message(STATUS "refused: ${layer} including ${header}")

@@ -62,7 +62,7 @@ TEST_CASE("outputs: a full disk stops the sweep with one line and status 3, and 
     const fs::path base = fresh_dir("full_disk");
     const fs::path disk = base / "disk";
     fs::create_directories(disk);
-    const std::vector<std::string> sweep = {"run", "--scenes", "asymmetric_free,dipole_top", "--schemes", "direct,cayley", "--jobs", "2"};
+    const std::vector<std::string> sweep = {"run", "--scenes", "asymmetric_free,dipole_top", "--schemes", "direct,cayley", "--quick", "--jobs", "2"};
     const std::vector<std::string> environment = {"ROTBENCH_CACHE=off"};
     const auto with_out = [&](const fs::path& out) {
         auto args = sweep;

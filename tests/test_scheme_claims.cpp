@@ -41,7 +41,7 @@ std::vector<std::string> schemes_where(bool (*predicate)(const SchemeClaims&)) {
 
 }  // namespace
 
-TEST_CASE("each scheme shows the order it claims, on a free asymmetric top and under an orientation-dependent torque") {
+TEST_CASE("each scheme shows the order it claims, on a free asymmetric top and under an orientation-dependent torque", "[study]") {
     for (const auto& expected : expected_orders()) {
         // Halving ladders of 5 steps from 1e-2, inside each scene's asymptotic range.
         const std::string scene = expected.with_torque ? "dipole_top" : "asymmetric_free";
@@ -54,7 +54,7 @@ TEST_CASE("each scheme shows the order it claims, on a free asymmetric top and u
     }
 }
 
-TEST_CASE("on the symmetric free cylinder each scheme converges at least at its claimed order") {
+TEST_CASE("on the symmetric free cylinder each scheme converges at least at its claimed order", "[study]") {
     // A symmetric top turns at two constant rates, which some schemes follow exactly to a
     // higher order (rozmanov_kusalik: fourth; its errors reach round-off by dt = 2.5e-4).
     for (const auto& expected : expected_orders()) {

@@ -27,7 +27,7 @@ const StabilityRow& row(const std::string& scene, const std::string& scheme, dou
 
 }  // namespace
 
-TEST_CASE("linear contacts: the eigenvalue and measured limits agree within 1 % (sharp limits)") {
+TEST_CASE("linear contacts: the eigenvalue and measured limits agree within 1 % (sharp limits)", "[study]") {
     int compared = 0;
     for (const auto& r : study()) {
         if (r.unstable_at_every_dt) continue;  // their limit depends on the initial mode content
@@ -38,7 +38,7 @@ TEST_CASE("linear contacts: the eigenvalue and measured limits agree within 1 % 
     CHECK(compared == 12);
 }
 
-TEST_CASE("undamped sphere pair: direct meets Peng's closed form, eq. 49 (its assumptions hold)") {
+TEST_CASE("undamped sphere pair: direct meets Peng's closed form, eq. 49 (its assumptions hold)", "[study]") {
     // The tangential contact mode under Velocity Verlet is the oscillator of Peng's
     // analysis: both limits equal 2/sqrt(k A_max); the bisection resolves 0.5 %.
     const auto& r = row("sphere_pair", "direct", 0.0);
@@ -46,7 +46,7 @@ TEST_CASE("undamped sphere pair: direct meets Peng's closed form, eq. 49 (its as
     CHECK(r.dt_amplification / r.dt_peng == Approx(1.0).margin(0.005));
 }
 
-TEST_CASE("where Peng's prediction is not conservative (findings)") {
+TEST_CASE("where Peng's prediction is not conservative (findings)", "[study]") {
     SECTION("zvw_corrected on the undamped sphere pair fails at about 0.76 of it") {
         const auto& r = row("sphere_pair", "zvw_corrected", 0.0);
         CHECK(r.dt_empirical / r.dt_peng > 0.70);
@@ -85,7 +85,7 @@ TEST_CASE("the weak instability is rho - 1 ~ dt^2 in the linearisation") {
     CHECK(spectral_radius(*scene, step_jacobian(*scene, "direct", 1e-4)) - 1.0 < 1e-6);
 }
 
-TEST_CASE("rotation-dominant (fast_spin, eq. 57): the limits scale as 1/w_max, and eq. 57 is safe for direct only") {
+TEST_CASE("rotation-dominant (fast_spin, eq. 57): the limits scale as 1/w_max, and eq. 57 is safe for direct only", "[study]") {
     const auto rows = stability_study({"fast_spin"}, {"direct", "munjiza_rk4", "zvw", "zvw_corrected"}, {}, {10.0, 100.0}, 2);
     auto find = [&](const std::string& scheme, double w) -> const StabilityRow& {
         for (const auto& r : rows)

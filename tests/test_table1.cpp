@@ -50,7 +50,7 @@ const RegisterScheme<MunjizaRk4<PublishedSmallAngleIncrement>> published_rk4(
 
 }  // namespace
 
-TEST_CASE("Table 1: every entry with dt = 1e-2 ... 1e-5 agrees within 1 %") {
+TEST_CASE("Table 1: every entry with dt = 1e-2 ... 1e-5 agrees within 1 %", "[study]") {
     const auto rows = compare_table1(table1_runs());
     REQUIRE(rows.size() == 30);
     int checked = 0;
@@ -64,7 +64,7 @@ TEST_CASE("Table 1: every entry with dt = 1e-2 ... 1e-5 agrees within 1 %") {
     CHECK(checked == 24);
 }
 
-TEST_CASE("Table 1 at dt = 1e-6: direct agrees, the other two disagree for the reasons the report gives") {
+TEST_CASE("Table 1 at dt = 1e-6: direct agrees, the other two disagree for the reasons the report gives", "[study]") {
     const auto rows = compare_table1(table1_runs());
     for (char c : {'x', 'y'}) {
         INFO("component " << c);
@@ -100,7 +100,7 @@ TEST_CASE("Table 1 at dt = 1e-6: direct agrees, the other two disagree for the r
     }
 }
 
-TEST_CASE("Table 1's orders: direct first order, Runge-Kutta and quaternion second order") {
+TEST_CASE("Table 1's orders: direct first order, Runge-Kutta and quaternion second order", "[study]") {
     // Ratio of errors between dt = 1e-4 and 1e-5 (asymptotic range): 10^p.
     const auto rows = compare_table1(table1_runs());
     auto order = [&](const std::string& scheme) {
