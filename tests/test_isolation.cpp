@@ -92,6 +92,33 @@ TEST_CASE("isolation: a plug-in scheme's run in a worker is the in-process run, 
     fs::remove_all(dir);
 }
 
+TEST_CASE("isolation: a worker that leaves a process holding its output ends its run, and the process is killed") {
+    const fs::path dir = fresh_dir("isolation_orphan");
+    fs::create_directories(dir);
+    const fs::path pid_file = dir / "orphan.pid";
+    // The worker inherits the environment: the plug-in writes its child's pid there.
+    const Cli r = binary({"--plugin", PLUGIN_CRASHING, "run", "--schemes", "bad_orphan", "--scenes", "asymmetric_free", "--dt", "0.05",
+                          "--run-timeout", "20", "--out", (dir / "out").string()},
+                         {"ROTBENCH_TEST_ORPHAN=" + pid_file.string()});
+    INFO(r.err);
+    CHECK(r.status == 0);
+    CHECK(failures(dir / "out").at("bad_orphan").empty());  // the run's result, not a time-out waiting for the pipe to close
+    REQUIRE(fs::exists(pid_file));
+    const pid_t orphan = std::stoi(read(pid_file));
+    REQUIRE(orphan > 1);
+    // Killed with the worker's process group: gone, or a zombie left to whoever adopted it.
+    const auto alive = [&] {
+        std::ifstream stat("/proc/" + std::to_string(orphan) + "/stat");
+        std::string pid_text, name, state;
+        return stat >> pid_text >> name >> state && state != "Z";
+    };
+    for (int i = 0; i < 200 && alive(); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    const bool survived = alive();
+    CHECK_FALSE(survived);
+    if (survived) ::kill(orphan, SIGKILL);  // orphan > 1, checked above
+    fs::remove_all(dir);
+}
+
 TEST_CASE("isolation: SIGINT or SIGTERM stops a sweep whose plug-in hangs, and kills its worker") {
     for (const int signal : {SIGINT, SIGTERM}) {
         const fs::path dir = fresh_dir("isolation_signal");

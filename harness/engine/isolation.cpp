@@ -41,6 +41,9 @@ std::string spec_text(const RunSpec& spec) {
     return record;
 }
 
+// A run's record is a few kB (its energy series included); a worker that writes more is broken.
+constexpr std::size_t max_worker_output = std::size_t(64) << 20;
+
 // What a non-blocking pipe holds now; false once it is at its end.
 bool drain(int fd, std::string& into, std::size_t keep) {
     char buffer[1 << 16];
@@ -113,6 +116,7 @@ RunResult run_isolated(const RunSpec& spec, const RunOptions& options, const Iso
     const rlim_t address_space = static_cast<rlim_t>(megabytes) << 20;
     const bool limit_memory = memory_limit_enforced();
     const pid_t pid = ::fork();
+    if (pid > 0) ::setpgid(pid, pid);  // as the child does: whichever runs first, the group exists before a kill
     if (pid == 0) {
         const rlimit limit{address_space, address_space};
         if (limit_memory) ::setrlimit(RLIMIT_AS, &limit);
@@ -132,9 +136,11 @@ RunResult run_isolated(const RunSpec& spec, const RunOptions& options, const Iso
     ::fcntl(out[0], F_SETFL, O_NONBLOCK);
     ::fcntl(err[0], F_SETFL, O_NONBLOCK);
     const auto start = std::chrono::steady_clock::now();
-    bool timed_out = false, interrupted = false;
+    bool timed_out = false, interrupted = false, too_much = false, exited = false;
+    int status = 0;
     pollfd fds[2] = {{out[0], POLLIN, 0}, {err[0], POLLIN, 0}};
-    for (int open_fds = 2; open_fds > 0;) {
+    // Until both pipes end, or the worker has exited (a process it started may hold them).
+    for (int open_fds = 2; open_fds > 0 && !exited;) {
         if (interrupt_signal()) {
             interrupted = true;
             break;
@@ -144,20 +150,26 @@ RunResult run_isolated(const RunSpec& spec, const RunOptions& options, const Iso
             break;
         }
         const int ready = ::poll(fds, 2, 100);  // a tenth of a second: signals and limits are looked at that often
-        if (ready < 0 && errno != EINTR) break;
-        for (int k = 0; k < 2 && ready > 0; ++k) {
-            if (fds[k].fd < 0 || !(fds[k].revents & (POLLIN | POLLHUP | POLLERR))) continue;
+        siginfo_t info{};  // WNOWAIT: seen to have exited, not reaped, so its pid stays its own
+        exited = ::waitid(P_PID, static_cast<id_t>(pid), &info, WEXITED | WNOHANG | WNOWAIT) == 0 && info.si_pid == pid;
+        for (int k = 0; k < 2; ++k) {
+            if (fds[k].fd < 0 || (!exited && !(ready > 0 && (fds[k].revents & (POLLIN | POLLHUP | POLLERR))))) continue;
             if (!drain(fds[k].fd, k == 0 ? text : errors, k == 0 ? 0 : 4096)) {
                 ::close(fds[k].fd);
                 fds[k].fd = -1;
                 --open_fds;
             }
         }
+        if (text.size() > max_worker_output) {
+            too_much = true;
+            break;
+        }
     }
-    if (timed_out || interrupted) ::kill(pid, SIGKILL);
+    // The worker's whole process group: it, and anything it started, whether it has exited or
+    // not. Its pid is not free for reuse until it is reaped below, so no other group is hit.
+    ::kill(-pid, SIGKILL);
     for (auto& f : fds)
         if (f.fd >= 0) ::close(f.fd);
-    int status = 0;
     while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
     }
     if (interrupted) {
@@ -165,6 +177,7 @@ RunResult run_isolated(const RunSpec& spec, const RunOptions& options, const Iso
         return failed;
     }
     if (timed_out) return fail(fmt::format("exceeded the run time limit of {:g} s (--run-timeout); its worker was killed", seconds));
+    if (too_much) return fail(fmt::format("its worker wrote more than {} MB as its result; it was killed", max_worker_output >> 20));
     if (WIFSIGNALED(status))
         return fail(fmt::format("crashed: signal {} ({}) in its worker process", WTERMSIG(status), ::strsignal(WTERMSIG(status))));
     const auto last_line = [&] {

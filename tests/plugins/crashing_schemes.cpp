@@ -1,8 +1,11 @@
-// Test plug-in: schemes that crash, abort, exit, hang, exhaust memory or throw a non-standard
-// exception. Each takes down only its own run: the worker process it is isolated in.
+// Test plug-in: schemes that crash, abort, exit, hang, exhaust memory, throw a non-standard
+// exception or leave a process behind. Each takes down only its own run: the worker process
+// it is isolated in.
 #include "schemes/scheme.hpp"
 #include <csignal>
+#include <cstdio>
 #include <cstdlib>
+#include <unistd.h>
 #include <vector>
 #include <thread>
 namespace {
@@ -18,6 +21,22 @@ template <int Mode> struct Bad {
         if constexpr (Mode == 3) for (;;) std::this_thread::sleep_for(std::chrono::seconds(1));
         if constexpr (Mode == 4) { std::vector<std::vector<char>> hog; for (;;) hog.emplace_back(1 << 26, 'x'); }
         if constexpr (Mode == 5) throw 42;
+        if constexpr (Mode == 6) leave_a_process();
+    }
+    // Once per worker: a child that holds the worker's output pipes and never ends; its pid goes
+    // to the file $ROTBENCH_TEST_ORPHAN, for the test to look for it afterwards.
+    static void leave_a_process() {
+        static bool done = false;
+        if (done) return;
+        done = true;
+        if (const pid_t child = ::fork(); child == 0) {
+            for (;;) ::pause();
+        } else if (const char* file = std::getenv("ROTBENCH_TEST_ORPHAN")) {
+            if (std::FILE* f = std::fopen(file, "w")) {
+                std::fprintf(f, "%d\n", static_cast<int>(child));
+                std::fclose(f);
+            }
+        }
     }
     static void correct(RigidBody&, Memory&, double) {}
 };
@@ -27,4 +46,5 @@ const RegisterScheme<Bad<2>> c("bad_exit", "exits", "t", "", {.sound = false});
 const RegisterScheme<Bad<3>> d("bad_hang", "hangs", "t", "", {.sound = false});
 const RegisterScheme<Bad<4>> e("bad_oom", "eats memory", "t", "", {.sound = false});
 const RegisterScheme<Bad<5>> f("bad_throw42", "throws 42", "t", "", {.sound = false});
+const RegisterScheme<Bad<6>> g("bad_orphan", "leaves a process holding its output", "t", "", {.sound = false});
 }
