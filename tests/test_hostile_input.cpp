@@ -7,6 +7,7 @@
 
 #include <catch2/catch.hpp>
 #include <sys/stat.h>
+#include <tuple>
 
 using namespace rotbench::test;
 
@@ -81,5 +82,45 @@ TEST_CASE("hostile inputs: shell metacharacters in a path are just characters") 
     CHECK_FALSE(fs::exists("pwned"));
     CHECK_FALSE(fs::exists(dir / "pwned"));
     CHECK_FALSE(fs::exists(out / "pwned"));
+    fs::remove_all(dir);
+}
+
+TEST_CASE("hostile inputs: a forged shard.csv is refused before anything is sized by it") {
+    const fs::path dir = fresh_dir("forged_shards");
+    for (const char* k : {"1", "2"})
+        REQUIRE(cli({"run", "--scenes", "dipole_top", "--schemes", "direct", "--dt", "1e-2,5e-3,2.5e-3", "--shard", std::string(k) + "/2",
+                     "--out", (dir / k).string()})
+                    .status == 0);
+    REQUIRE(cli({"merge", (dir / "1").string(), (dir / "2").string(), "--out", (dir / "merged").string()}).status == 0);
+    const std::string shard = read(dir / "1" / "shard.csv");
+    // The second row's fields: plan_id,shard,shards,plan_size,plan_index,...
+    const auto forged = [&](int field, const std::string& value) {
+        const std::size_t row = shard.find('\n') + 1;
+        std::size_t begin = row;
+        for (int i = 0; i < field; ++i) begin = shard.find(',', begin) + 1;
+        const std::size_t end = shard.find(',', begin);
+        fs::remove_all(dir / "forged");
+        fs::copy(dir / "1", dir / "forged", fs::copy_options::recursive);
+        write(dir / "forged" / "shard.csv", shard.substr(0, begin) + value + shard.substr(end));
+        return std::vector<std::string>{"merge", (dir / "forged").string(), (dir / "2").string(), "--out", (dir / "out").string()};
+    };
+    for (const auto& [field, value, message] : std::vector<std::tuple<int, std::string, std::string>>{
+             {3, "1000000000000000000", "in a plan of 1000000000000000000 runs cannot hold 2 runs"},
+             {3, "1e300", "'1e300' is not a count (plan_size)"},
+             {3, "-1", "is not a count"},
+             {3, "nan", "is not a count"},
+             {2, "99999999999", "cannot hold"},
+             {2, "999", "a slice of another sweep (plan"},  // its other rows say 2
+             {1, "0", "cannot hold"},
+             {4, "99999999999", "does not match runs.csv"},
+         }) {
+        const auto args = forged(field, value);
+        const Cli r = cli(args);
+        INFO(value << " -> " << r.err);
+        CHECK(r.status == 2);
+        CHECK(one_line(r.err));
+        CHECK_THAT(r.err, Catch::Contains(message));
+        CHECK_FALSE(fs::exists(dir / "out"));
+    }
     fs::remove_all(dir);
 }

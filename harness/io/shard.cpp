@@ -9,6 +9,8 @@
 #include <charconv>
 #include <cstdint>
 #include <fmt/format.h>
+#include <limits>
+#include <map>
 
 namespace rotbench {
 
@@ -66,7 +68,7 @@ std::vector<RunResult> merge_shards(const std::vector<std::filesystem::path>& di
     int shards = 0;
     std::size_t plan_size = 0;
     std::vector<int> seen;
-    std::vector<std::optional<RunResult>> merged;
+    std::map<std::size_t, RunResult> merged;  // by plan index; never sized by a number read from a file
     for (const auto& dir : dirs) {
         const std::string name = (dir / "shard.csv").string();
         const auto rows = read_csv(dir / "shard.csv", "plan_id,shard,shards,plan_size,plan_index,scene,scheme,dt");
@@ -76,39 +78,51 @@ std::vector<RunResult> merge_shards(const std::vector<std::filesystem::path>& di
                              std::to_string(results.size()));
         for (std::size_t i = 0; i < rows.size(); ++i) {
             const auto& f = rows[i];
-            const int k = static_cast<int>(csv_number(f[1], name)), n = static_cast<int>(csv_number(f[2], name));
-            const auto size = static_cast<std::size_t>(csv_number(f[3], name));
-            const auto index = static_cast<std::size_t>(csv_number(f[4], name));
+            const std::string at = name + ":" + std::to_string(i + 2);
+            const auto count = [&](const std::string& field, const char* what) {
+                std::uint64_t v = 0;
+                const auto [ptr, ec] = std::from_chars(field.data(), field.data() + field.size(), v);
+                if (field.empty() || ec != std::errc() || ptr != field.data() + field.size())
+                    throw InputError(at + ": '" + field + "' is not a count (" + what + ")");
+                return v;
+            };
+            const std::uint64_t k = count(f[1], "shard"), n = count(f[2], "shards"), size = count(f[3], "plan_size"),
+                                index = count(f[4], "plan_index");
+            // Checked before use: a slice holds every n-th run of the plan, so at least
+            // floor(plan_size / n) of them.
+            if (n < 1 || n > static_cast<std::uint64_t>(std::numeric_limits<int>::max()) || k < 1 || k > n ||
+                size / n > rows.size())
+                throw InputError(at + ": shard " + f[1] + " of " + f[2] + " in a plan of " + f[3] + " runs cannot hold " +
+                                 std::to_string(rows.size()) + " runs");
             if (plan.empty()) {
-                plan = f[0], shards = n, plan_size = size;
-                merged.resize(plan_size);
+                plan = f[0], shards = static_cast<int>(n), plan_size = size;
             }
-            if (f[0] != plan || n != shards || size != plan_size)
+            if (f[0] != plan || static_cast<int>(n) != shards || size != plan_size)
                 throw InputError(name + ": a slice of another sweep (plan " + f[0] + ", " +
                                  std::to_string(n) + " shards) than the first directory's (plan " + plan + ", " +
                                  std::to_string(shards) + " shards)");
             if (i == 0) {
-                if (std::find(seen.begin(), seen.end(), k) != seen.end())
+                if (std::find(seen.begin(), seen.end(), static_cast<int>(k)) != seen.end())
                     throw InputError(dir.string() + ": shard " + std::to_string(k) + " is given twice");
-                seen.push_back(k);
+                seen.push_back(static_cast<int>(k));
             }
             const RunResult& r = results[i];
-            if (index >= plan_size || merged[index] || r.spec.scene != f[5] || r.spec.scheme != f[6])
+            if (index >= plan_size || merged.count(index) || r.spec.scene != f[5] || r.spec.scheme != f[6])
                 throw InputError(name + ": row " + std::to_string(i + 2) + " does not match runs.csv");
             merged[index] = r;
         }
     }
     if (static_cast<int>(seen.size()) != shards) {
         std::string missing;
-        for (int k = 1; k <= shards; ++k)
-            if (std::find(seen.begin(), seen.end(), k) == seen.end()) missing += (missing.empty() ? "" : ", ") + std::to_string(k);
+        int listed = 0;
+        for (int k = 1; k <= shards && listed <= 10; ++k)
+            if (std::find(seen.begin(), seen.end(), k) == seen.end())
+                missing += (missing.empty() ? "" : ", ") + (++listed > 10 ? std::string("...") : std::to_string(k));
         throw InputError("merge: shard(s) " + missing + " of " + std::to_string(shards) + " missing");
     }
+    if (merged.size() != plan_size) throw InputError("merge: the shards do not cover the whole plan");
     std::vector<RunResult> out;
-    for (auto& r : merged) {
-        if (!r) throw InputError("merge: the shards do not cover the whole plan");
-        out.push_back(std::move(*r));
-    }
+    for (auto& [index, r] : merged) out.push_back(std::move(r));
     return out;
 }
 
