@@ -30,15 +30,24 @@ std::string& worker() {
 }
 
 // The spec as the worker reads it: the runs.csv record of a run without metrics. A record
-// names its t_end, so the scene's default (t_end 0 in a spec) is written out.
-std::string spec_text(const RunSpec& spec) {
+// names its t_end, so the scene's own (t_end 0 in a spec) is written out.
+std::string spec_text(const RunSpec& spec, const Scene& scene) {
     RunResult r;
     r.spec = spec;
-    if (!(r.spec.t_end > 0.0)) r.spec.t_end = make_scene(spec.scene, spec.params)->t_end();
+    r.spec.t_end = scene.t_end();
     const std::string csv = runs_csv({r});
     std::string record = csv.substr(csv.find('\n') + 1);  // without the header,
     record.pop_back();                                       // nor the line break an argument may not hold
     return record;
+}
+
+// The default time limit: ten times what a slow plug-in (10 us per body-step) would take, and
+// a minute more; ten minutes for a stability search.
+double default_timeout(const RunSpec& spec, const Scene& scene) {
+    if (spec.kind == RunKind::stability) return 600.0;
+    const double body_steps = static_cast<double>(step_count(scene.t_end(), spec.dt)) * static_cast<double>(scene.initial_state().size());
+    const double ways = spec.kind == RunKind::reversal ? 2.0 : 1.0;
+    return 60.0 + 10.0 * 1e-5 * body_steps * ways;
 }
 
 // A run's record is a few kB (its energy series included); a worker that writes more is broken.
@@ -64,15 +73,6 @@ const std::string& worker_executable() { return worker(); }
 
 bool isolated(const std::string& scheme) { return !worker().empty() && plugin_of(scheme) != nullptr; }
 
-double isolation_timeout(const RunSpec& spec) {
-    if (spec.kind == RunKind::stability) return 600.0;
-    ParamOverrides overrides = spec.params;
-    if (spec.t_end > 0.0) overrides.push_back({"t_end", {spec.t_end}});
-    const auto scene = make_scene(spec.scene, overrides);
-    const double body_steps = static_cast<double>(step_count(scene->t_end(), spec.dt)) * static_cast<double>(scene->initial_state().size());
-    const double ways = spec.kind == RunKind::reversal ? 2.0 : 1.0;
-    return 60.0 + 10.0 * 1e-5 * body_steps * ways;
-}
 
 bool memory_limit_enforced() {
 #if defined(__SANITIZE_ADDRESS__)
@@ -96,13 +96,14 @@ RunResult run_isolated(const RunSpec& spec, const RunOptions& options, const Iso
         failed.metrics = {{"unstable", 1.0}};
         return failed;
     };
-    const double seconds = limits.seconds > 0 ? limits.seconds : isolation_timeout(spec);
+    const auto scene = scene_of(spec);
+    const double seconds = limits.seconds > 0 ? limits.seconds : default_timeout(spec, *scene);
     const std::size_t megabytes = limits.megabytes > 0 ? limits.megabytes : isolation_memory(1);
 
     // Everything the child needs is built before fork: after it, only exec.
     std::vector<std::string> args = {worker()};
     for (const auto& p : loaded_plugins()) args.insert(args.end(), {"--plugin", p.path});
-    args.insert(args.end(), {"__run", "--spec", spec_text(spec), "--series", std::to_string(options.series_samples)});
+    args.insert(args.end(), {"__run", "--spec", spec_text(spec, *scene), "--series", std::to_string(options.series_samples)});
     if (!options.measure_time || !spec.timed) args.push_back("--untimed");
     std::vector<char*> argv;
     for (auto& a : args) argv.push_back(a.data());

@@ -13,7 +13,7 @@
 namespace rotbench {
 
 struct IsolationLimits {
-    double seconds = 0;        // wall time of one run; 0: derived from the run (isolation_timeout)
+    double seconds = 0;        // wall time of one run; 0: ten times a slow plug-in's (10 us per body-step) and a minute
     std::size_t megabytes = 0; // address space of the child; 0: derived from the machine (isolation_memory)
 };
 
@@ -25,9 +25,8 @@ const std::string& worker_executable();
 // Whether a scheme's runs go to a child process: it comes from a plug-in, and there is a worker.
 bool isolated(const std::string& scheme);
 
-// The default limits: ten times what a slow plug-in (10 us per body-step) would take, and a
-// minute more (ten minutes for a stability search); half of the machine's memory over `jobs`.
-double isolation_timeout(const RunSpec& spec);
+// The default memory limit: half of the machine's memory over `jobs`, at least 1 GB. (The
+// default time limit is derived from the run: IsolationLimits.)
 std::size_t isolation_memory(int jobs);
 
 // False in a build with AddressSanitizer, which reserves terabytes of address space for its

@@ -12,9 +12,7 @@ namespace rotbench {
 
 RunResult run_reversal(const RunSpec& requested) {
     const auto& entry = SchemeRegistry::instance().at(requested.scheme, "scheme");
-    ParamOverrides overrides = requested.params;
-    if (requested.t_end > 0.0) overrides.push_back({"t_end", {requested.t_end}});
-    const auto scene = make_scene(requested.scene, overrides);
+    const auto scene = scene_of(requested);
     RunResult result{requested, {}, {}};
     result.spec.t_end = scene->t_end();
     const double dt = requested.dt;

@@ -210,6 +210,12 @@ double RunResult::value(const std::string& name) const {
     return nan;
 }
 
+std::unique_ptr<Scene> scene_of(const RunSpec& spec) {
+    ParamOverrides overrides = spec.params;
+    if (spec.t_end > 0.0) overrides.push_back({"t_end", {spec.t_end}});
+    return make_scene(spec.scene, overrides);
+}
+
 std::int64_t step_count(double t_end, double dt) {
     if (!std::isfinite(dt) || dt <= 0.0) throw InputError(fmt::format("time step must be a positive number, got {}", dt));
     if (!std::isfinite(t_end) || t_end <= 0.0)
@@ -251,9 +257,7 @@ RunResult run_one(const RunSpec& requested, const RunOptions& options) {
 
 RunResult run_trajectory(const RunSpec& requested, const RunOptions& options) {
     const auto& scheme_entry = SchemeRegistry::instance().at(requested.scheme, "scheme");
-    ParamOverrides overrides = requested.params;
-    if (requested.t_end > 0.0) overrides.push_back({"t_end", {requested.t_end}});
-    const auto scene = make_scene(requested.scene, overrides);
+    const auto scene = scene_of(requested);
     RunResult result{requested, {}, {}};
     result.spec.t_end = scene->t_end();
     const double dt = result.spec.dt;

@@ -79,6 +79,9 @@ struct RunOptions {
     std::size_t run_memory_mb = 0;
 };
 
+// The scene a run is made on: its parameters, and its t_end (0: the scene's own).
+std::unique_ptr<Scene> scene_of(const RunSpec& spec);
+
 // Runs and measures; never throws for a failing scheme (the failure is recorded), but
 // throws InputError for unknown ids or bad numbers.
 RunResult run_one(const RunSpec& spec, const RunOptions& options = {});

@@ -7,9 +7,7 @@ namespace rotbench {
 
 RunResult run_stability_search(const RunSpec& requested) {
     SchemeRegistry::instance().at(requested.scheme, "scheme");
-    ParamOverrides overrides = requested.params;
-    if (requested.t_end > 0.0) overrides.push_back({"t_end", {requested.t_end}});
-    const auto scene = make_scene(requested.scene, overrides);
+    const auto scene = scene_of(requested);
     const auto* probe = dynamic_cast<const StabilityProbe*>(scene.get());
     if (!probe) throw InputError("scene '" + requested.scene + "' is not a stability scene");
     RunResult result{requested, {}, {}};
