@@ -50,8 +50,7 @@ public:
         command.add_option("--shard", shard_, "K/N: run only the K-th of N slices of the gate's runs (judge the merge with --results)");
         command.add_option("--schemes", schemes_, "comma list of scheme ids: gate only these (default: all the file names)");
         command.add_option("--jobs", jobs_, "runs in parallel (results do not depend on it)")->check(CLI::Range(1, max_jobs));
-        command.add_option("--run-timeout", run_timeout_, "SECONDS: a plug-in's run is stopped after this long");
-        command.add_option("--run-memory", run_memory_, "MB: the memory a plug-in's run may take")->check(CLI::Range(64, 1 << 30));
+        isolation_.add_to(command);
         command.add_flag("--overwrite", overwrite_, "replace the gate's earlier outputs (in --out, and --junit and --summary files)");
     }
 
@@ -87,10 +86,8 @@ public:
                     runs[i].spec.kind != plan.runs[i].kind || runs[i].spec.dt != plan.runs[i].dt)
                     throw InputError("--results " + results_ + ": run " + std::to_string(i + 1) + " is not the one this gate makes there");
         } else {
-            const RunOptions options{.measure_time = true,
-                                     .series_samples = 0,
-                                     .run_timeout = run_timeout_.empty() ? 0.0 : parse_positive(run_timeout_, "--run-timeout"),
-                                     .run_memory_mb = static_cast<std::size_t>(run_memory_)};
+            RunOptions options{.measure_time = true};
+            isolation_.apply(options);
             const SweepOutcome outcome = sweep_plan(slice, dir ? &*dir : nullptr, how, options, jobs_, true);
             if (outcome.exit_status) return outcome.exit_status;
             if (slice.shard) {
@@ -128,8 +125,8 @@ public:
     }
 
 private:
-    std::string file_, junit_, summary_, out_, results_, shard_, baseline_, run_timeout_, schemes_;
-    int run_memory_ = 0;
+    std::string file_, junit_, summary_, out_, results_, shard_, baseline_, schemes_;
+    IsolationOptions isolation_;
     int jobs_ = core_count();
     bool overwrite_ = false;
 };

@@ -24,8 +24,8 @@ namespace fs = std::filesystem;
 namespace {
 
 struct RunOptionsText {
-    std::string scenes, schemes, dts, t_end, config, shard, resume, run_timeout, out = "rotbench-out";
-    int run_memory = 0;
+    std::string scenes, schemes, dts, t_end, config, shard, resume, out = "rotbench-out";
+    IsolationOptions isolation;
     std::vector<std::string> settings;
     int energy_series = 200;
     int jobs = core_count();
@@ -59,10 +59,7 @@ void add_run_options(CLI::App& cmd, RunOptionsText& o) {
     cmd.add_option("--jobs", o.jobs, "runs in parallel (results do not depend on it)")
         ->capture_default_str()
         ->check(CLI::Range(1, max_jobs));
-    cmd.add_option("--run-timeout", o.run_timeout,
-                   "SECONDS: a plug-in's run is stopped after this long (default: ten times a slow step, and a minute)");
-    cmd.add_option("--run-memory", o.run_memory, "MB: the memory a plug-in's run may take (default: half the machine over --jobs)")
-        ->check(CLI::Range(64, 1 << 30));
+    o.isolation.add_to(cmd);
     cmd.add_option("--energy-series", o.energy_series, "energy samples per run in scenes that plot it (0: none)")
         ->capture_default_str()
         ->check(CLI::Range(0, max_series_samples));
@@ -97,8 +94,7 @@ int run_sweep_command(const RunOptionsText& o, const Invocation& how) {
                                            how.resuming.has_value()});
     RunOptions options;
     options.series_samples = o.energy_series;
-    options.run_timeout = o.run_timeout.empty() ? 0.0 : parse_positive(o.run_timeout, "--run-timeout");
-    options.run_memory_mb = static_cast<std::size_t>(o.run_memory);
+    o.isolation.apply(options);
     const SweepOutcome outcome = sweep_plan(slice, &dir, how, options, o.jobs, false);
     if (outcome.exit_status) return outcome.exit_status;
     if (!slice.shard) write_outputs(dir, outcome.results, how.command_line, how.out);

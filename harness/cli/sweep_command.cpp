@@ -3,6 +3,7 @@
 #include "harness/engine/interrupt.hpp"
 #include "harness/engine/sweep.hpp"
 #include "harness/io/journal.hpp"
+#include "harness/io/parse.hpp"
 #include "harness/io/output_files.hpp"
 #include "harness/io/results_csv.hpp"
 #include "harness/io/series_csv.hpp"
@@ -12,6 +13,18 @@
 
 namespace rotbench {
 namespace fs = std::filesystem;
+
+void IsolationOptions::add_to(CLI::App& command) {
+    command.add_option("--run-timeout", run_timeout,
+                       "SECONDS: a plug-in's run is stopped after this long (default: ten times a slow step, and a minute)");
+    command.add_option("--run-memory", run_memory, "MB: the memory a plug-in's run may take (default: half the machine over --jobs)")
+        ->check(CLI::Range(64, 1 << 30));
+}
+
+void IsolationOptions::apply(RunOptions& options) const {
+    options.run_timeout = run_timeout.empty() ? 0.0 : parse_positive(run_timeout, "--run-timeout");
+    options.run_memory_mb = static_cast<std::size_t>(run_memory);
+}
 
 PlanSlice slice_plan(std::vector<RunSpec> plan, const std::string& shard_text) {
     PlanSlice slice;

@@ -30,6 +30,14 @@ struct SweepOutcome {
     int exit_status = 0;             // 128 + signal when SIGINT or SIGTERM cut the sweep short
 };
 
+// --run-timeout and --run-memory, the limits of a plug-in's run in its worker, as given.
+struct IsolationOptions {
+    std::string run_timeout;
+    int run_memory = 0;
+    void add_to(CLI::App& command);
+    void apply(RunOptions& options) const;  // InputError for a bad --run-timeout
+};
+
 // Runs the slice, `jobs` at a time, with a line per finished run on how.out. With a directory
 // every finished run goes to its journal (DIR/partial) first, and a resumed invocation
 // (how.resuming) runs only what is missing. `timed_alone`: the runs that are timed go last,
