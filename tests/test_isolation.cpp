@@ -1,6 +1,6 @@
 // Plug-in runs in a worker process (harness/engine/isolation.hpp): a scheme that segfaults,
-// aborts, exits, throws what is not a std::exception, hangs or exhausts memory fails its own
-// runs, named, and the sweep goes on; an isolated run gives the numbers an in-process run
+// aborts, exits, throws what is not a std::exception, hangs, exhausts memory or leaves a
+// process behind fails (or ends) its own runs, named, and the sweep goes on; an isolated run gives the numbers an in-process run
 // gives; a signal stops a sweep whose plug-in hangs at once.
 #include "harness/engine/isolation.hpp"
 #include "tests/cli_helpers.hpp"

@@ -3,11 +3,8 @@
 #include "harness/cli/verb.hpp"
 #include "harness/engine/interrupt.hpp"
 #include "harness/engine/run.hpp"
-#include "harness/io/csv.hpp"
 #include "harness/io/results_csv.hpp"
 #include "harness/io/run_record.hpp"
-
-#include <unistd.h>
 
 namespace rotbench {
 namespace {
@@ -21,9 +18,9 @@ public:
         command.add_flag("--untimed", untimed_, "no timing repeats");
     }
     int run(const Invocation& how) override {
-        const std::string runs = "scene,scheme,kind,dt,t_end,params,metrics,timing,failure\n" + spec_;
-        auto specs = parse_results("scene,scheme,dt,metric,value\n", runs.back() == '\n' ? runs : runs + "\n", {}, "the worker's spec");
-        RunSpec spec = specs.at(0).spec;
+        // The record under runs.csv's header (runs_csv of no run), and no metrics under results.csv's.
+        const auto specs = parse_results(results_csv({}), runs_csv({}) + spec_ + "\n", {}, "the worker's spec");
+        const RunSpec spec = specs.at(0).spec;
         const InterruptGuard guard;  // a signal ends the run at its next step, as in process
         const RunResult r = run_one(spec, {.measure_time = !untimed_, .series_samples = series_});
         if (r.interrupted) return 130;
