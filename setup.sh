@@ -28,6 +28,7 @@ cmake --build "$build" --parallel "$(nproc)"
 case "${1:-build}" in
   build)  ;;
   report) "$build/rotbench" run --out out/default --overwrite
+          "$build/rotbench" stability --out out/default --overwrite   # into the report (about 7 s)
           benchmarks/cost.sh "$build" out/default          # the cost table (about 5 min)
           "$build/rotbench" report out/default
           echo "setup: report written to out/default/report.md" ;;

@@ -1,13 +1,11 @@
-// Per scene: error against dt (convergence, with reference slopes) and error against cost
-// (work-precision: CPU time, force evaluations and, where the cost table counted them, the
-// scheme's instructions), one line per scheme, drawn by gnuplot.
+// Per scene: error against dt (convergence, with reference slopes) and error against the CPU
+// time of the run (work-precision), the schemes in panels by family (reports/panels.hpp),
+// drawn by gnuplot.
 #pragma once
 
-#include "harness/engine/run.hpp"
+#include "harness/analysis/result_set.hpp"
 #include "harness/io/output_dir.hpp"
 
-#include <filesystem>
-#include <map>
 #include <string>
 #include <vector>
 
@@ -17,10 +15,12 @@ namespace rotbench {
 // otherwise energy_drift_max.
 std::string plotted_error(const std::vector<const RunResult*>& runs);
 
-// `bodies`: the scene's number of bodies. Writes DIR/plots/runs_<scene>.dat and the convergence and work-precision scripts and
-// SVGs; returns the Markdown that shows them. `instructions`: per body-step, by scheme
-// (reports/cost_table.hpp); empty, or missing a scheme, leaves that panel out.
-std::string convergence_plots(const std::string& scene, std::size_t bodies, const std::vector<const RunResult*>& runs,
-                              const OutputDir& dir, const std::map<std::string, double>& instructions = {});
+// Its axis label, with the unit.
+std::string error_label(const std::string& metric);
+
+// Writes DIR/plots/runs_<scene>.dat and the convergence and work-precision scripts and SVGs;
+// returns the Markdown that shows them. `best`: one scheme per family, for the overview panel.
+std::string convergence_plots(const std::string& scene, const std::vector<const RunResult*>& runs, const ResultSet& set,
+                              const OutputDir& dir, const std::vector<std::string>& best);
 
 }  // namespace rotbench

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
+#include <map>
 #include <optional>
 #include <sstream>
 #include <vector>
@@ -57,54 +58,52 @@ std::pair<double, std::string> largest(const std::vector<Row>& rows, const std::
 }  // namespace
 
 std::string cost_section(const std::filesystem::path& dir) {
-    std::string md = "## Cost per body-step\n\n";
+    std::string md = "## " + cost_heading + "\n\n"
+                     "The report ranks schemes by `ns_per_step` alone (section Verdicts). The figures here are of other "
+                     "kinds and appear only here: the time per body-step of 1e6 bodies stepped together, and instruction "
+                     "counts.\n\n";
     const auto rows = read_rows(dir);
     if (!rows) {
-        return md + "No cost table here: `benchmarks/cost.sh BUILD " + dir.string() + "` measures it (about 5 min) and "
+        return md + "No cost table here: `benchmarks/cost.sh BUILD " + dir.string() + "` measures it and "
                     "`rotbench report " + dir.string() + "` then includes it (README \"Speed\").\n\n";
     }
-    md += "Each scheme stepping 1e6 bodies with random states and torques read from memory (`rotbench_bench`, "
-          "Google Benchmark: 10 processes of 3 repetitions in random interleaved order, since times differ between "
-          "processes more than repetitions average out; a scheme of more than 5000 instructions per body-step, 2 "
+    md += "*Batched 1e6-body time*: each scheme stepping 1e6 bodies with random states and torques read from memory "
+          "(`rotbench_bench`, Google Benchmark: 10 processes of 3 repetitions in random interleaved order, since times differ "
+          "between processes more than repetitions average out; a scheme of more than 5000 instructions per body-step, 2 "
           "processes of 4; the least time of all repetitions, since the other tenants of the shared machine only add time; "
-          "spread = (max - min) / least), batched and one body at a time "
-          "through the scheme interface, and its "
-          "instructions per body-step counted by callgrind (1000 bodies batched, and one body), which do not depend on "
-          "the machine's load. `load_store` reads and writes the same state and computes nothing: the floor of the "
-          "batched loops. The seed schemes step packs of four bodies (AVX2, `schemes/simd.hpp`); the others one body at "
-          "a time in both columns. What limits a scheme: *memory share* is load_store's time over the scheme's batched "
-          "time (the part that moving the state alone takes); *libm* is the part of its instructions, one body at a "
-          "time, spent in sin, cos and the like (the packs' are inlined and cannot be counted apart).\n\n"
-          "| scheme | ns batched | spread | ns one at a time | spread | speed-up | instr. batched | instr. one at a time "
-          "| libm | memory share | ns / direct | instr. / direct |\n|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|\n";
+          "spread = (max - min) / least), batched and one body at a time through the scheme interface. `load_store` reads "
+          "and writes the same state and computes nothing: the floor of the batched loops. The seed schemes step packs of "
+          "four bodies (AVX2, `schemes/simd.hpp`); the others one body at a time in both columns.\n\n"
+          "| scheme | batched (ns / body-step) | spread | one at a time (ns / body-step) | spread | speed-up | batched / direct |\n"
+          "|---|--:|--:|--:|--:|--:|--:|\n";
+    for (auto r : *rows)
+        md += fmt::format("| {} | {} | {} | {} | {} | {} | {} |\n", r["scheme"], number(r["ns_batched"], "{:.1f}"),
+                          number(r["ns_batched_spread"], "{:.1f} %", 100.0), number(r["ns_alone"], "{:.1f}"),
+                          number(r["ns_alone_spread"], "{:.1f} %", 100.0), number(r["speedup"], "{:.2f}x"),
+                          number(r["ns_ratio_to_direct"], "{:.2f}"));
+    md += "\n*Instruction counts* per body-step, by callgrind (1000 bodies batched, and one body), which do not depend on the "
+          "machine's load. What limits a scheme: *memory share* is load_store's batched time over the scheme's (the part "
+          "that moving the state alone takes); *libm* is the part of its instructions, one body at a time, spent in sin, cos "
+          "and the like (the packs' are inlined and cannot be counted apart).\n\n"
+          "| scheme | instr. batched | instr. one at a time | instr. / direct | libm | memory share |\n|---|--:|--:|--:|--:|--:|\n";
     for (auto r : *rows) {
+        if (r["instr_alone"].empty() && r["instr_batched"].empty()) continue;
         const std::string libm = r["libm_instr_alone"].empty() || r["instr_alone"].empty()
                                      ? ""
                                      : fmt::format("{:.0f} %", 100.0 * std::stod(r["libm_instr_alone"]) / std::stod(r["instr_alone"]));
-        md += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |\n", r["scheme"],
-                          number(r["ns_batched"], "{:.1f}"), number(r["ns_batched_spread"], "{:.1f} %", 100.0),
-                          number(r["ns_alone"], "{:.1f}"), number(r["ns_alone_spread"], "{:.1f} %", 100.0),
-                          number(r["speedup"], "{:.2f}x"), number(r["instr_batched"], "{:.0f}"), number(r["instr_alone"], "{:.0f}"),
-                          libm, number(r["memory_share"], "{:.0f} %", 100.0), number(r["ns_ratio_to_direct"], "{:.2f}"),
-                          number(r["instr_ratio_to_direct"], "{:.2f}"));
+        md += fmt::format("| {} | {} | {} | {} | {} | {} |\n", r["scheme"], number(r["instr_batched"], "{:.0f}"),
+                          number(r["instr_alone"], "{:.0f}"), number(r["instr_ratio_to_direct"], "{:.2f}"), libm,
+                          number(r["memory_share"], "{:.0f} %", 100.0));
     }
     const auto spread = largest(*rows, {"ns_batched_spread", "ns_alone_spread"});
     md += fmt::format("\nLargest spread of a time over its repetitions: {:.1f} % ({}).", 100.0 * spread.first, spread.second);
     const auto speedup = largest(*rows, {"speedup_runs_differ"}), ratio = largest(*rows, {"ns_ratio_runs_differ"});
     if (!speedup.second.empty() || !ratio.second.empty())
         md += fmt::format(" Repeatability: the odd and the even processes, each a cost table of its own, agree within "
-                          "{:.1f} % on every speed-up (largest difference: {}) and within {:.1f} % on every ns / direct (largest: {}).",
+                          "{:.1f} % on every speed-up (largest difference: {}) and within {:.1f} % on every batched / direct (largest: {}).",
                           100.0 * speedup.first, speedup.second, 100.0 * ratio.first, ratio.second);
     md += " Instruction counts are exact: two counts of the same binary agree to the instruction.\n\n";
     return md;
-}
-
-std::map<std::string, double> instructions_per_body_step(const std::filesystem::path& dir) {
-    std::map<std::string, double> found;
-    if (const auto rows = read_rows(dir))
-        for (const Row& r : *rows)
-            if (r.count("instr_alone") && !r.at("instr_alone").empty()) found[r.at("scheme")] = std::stod(r.at("instr_alone"));
-    return found;
 }
 
 }  // namespace rotbench

@@ -4,16 +4,14 @@
 #pragma once
 
 #include <filesystem>
-#include <map>
 #include <string>
 
 namespace rotbench {
 
+// The heading of its section.
+inline const std::string cost_heading = "Cost: the batched benchmark and instruction counts";
+
 // Markdown; says how to produce the table when DIR/cost.csv is absent.
 std::string cost_section(const std::filesystem::path& dir);
-
-// Instructions per body-step of each scheme stepping one body at a time, as every scene
-// does (the work-precision plots' deterministic cost); empty when DIR/cost.csv is absent.
-std::map<std::string, double> instructions_per_body_step(const std::filesystem::path& dir);
 
 }  // namespace rotbench

@@ -3,6 +3,7 @@
 #include "harness/io/output_files.hpp"
 #include "harness/io/series_csv.hpp"
 #include "reports/gnuplot.hpp"
+#include "reports/panels.hpp"
 #include "reports/seed_figures.hpp"
 
 #include <algorithm>
@@ -14,19 +15,22 @@
 namespace rotbench {
 namespace {
 
-std::string plot_script(const std::string& scene, double dt, const std::vector<const RunResult*>& runs) {
-    std::string s = fmt::format(
-        "set terminal svg size 800,450 dynamic noenhanced font 'sans,12'\n"
-        "{}"
-        "set datafile separator ','\n"
-        "set title 'Relative energy error, {}, dt = {:g} s'\n"
-        "set xlabel 't (s)'\nset ylabel '(E - E0) / |E0|'\nset key outside right\nset grid\n"
-        "plot ",
-        gnuplot_output(fmt::format("energy_{}_dt{}.svg", scene, dt_tag(dt))), scene, dt);
-    for (std::size_t i = 0; i < runs.size(); ++i)
-        s += fmt::format("{}'../series/{}' using 1:2 with lines lw 1.5 dt {} title '{}'", i ? ", \\\n     " : "",
-                         series_file_name(*runs[i]), i / 8 + 1, runs[i]->spec.scheme);  // 8 colours, then dashes
-    return s + "\n";
+std::string plot_script(const std::string& scene, double dt, const std::vector<const RunResult*>& runs, const ResultSet& set) {
+    std::vector<std::string> schemes;
+    for (const RunResult* r : runs) schemes.push_back(r->spec.scheme);
+    const auto panels = family_panels(set, schemes);
+    const std::string setup = "set datafile separator ','\nset xlabel 't (s)'\nset ylabel '(E - E0) / |E0| (relative)'\nset grid\n";
+    return panel_grid_script(gnuplot_output(fmt::format("energy_{}_dt{}.svg", scene, dt_tag(dt))),
+                             fmt::format("Relative energy error, {}, dt = {:g} s", scene, dt), setup, panels, [&](std::size_t p) {
+                                 std::string line = "plot ";
+                                 for (std::size_t i = 0; i < panels[p].schemes.size(); ++i) {
+                                     const auto at = std::find(schemes.begin(), schemes.end(), panels[p].schemes[i]) - schemes.begin();
+                                     line += fmt::format("{}'../series/{}' using 1:2 with lines lw 1.5 {} title '{}'",
+                                                         i ? ", \\\n     " : "", series_file_name(*runs[at]),
+                                                         series_style(i).substr(0, series_style(i).find(" pt")), panels[p].schemes[i]);
+                                 }
+                                 return line + "\n";
+                             });
 }
 
 const std::vector<std::string> seed_schemes = {"direct", "munjiza_rk4", "zvw", "zvw_corrected"};
@@ -57,7 +61,8 @@ std::string energy_slopes(const std::map<std::pair<std::string, double>, std::ve
 
 }  // namespace
 
-std::string energy_series_section(const std::vector<RunResult>& results, const OutputDir& dir, const Executor& executor) {
+std::string energy_series_section(const ResultSet& set, const OutputDir& dir, const Executor& executor) {
+    const std::vector<RunResult>& results = set.runs;
     // Plotted per scene: the coarsest and the finest step, and the steps of the seed's figures.
     std::map<std::string, std::pair<double, double>> range;  // scene -> (finest, coarsest)
     for (const auto& r : results)
@@ -96,7 +101,7 @@ std::string energy_series_section(const std::vector<RunResult>& results, const O
         std::string& md = parts[g];
         for (const RunResult* r : runs) write_series_file(*r, dir);
         const std::string name = fmt::format("energy_{}_dt{}", scene, dt_tag(dt));
-        const Drawn drawn = draw_with_gnuplot(dir, "plots/" + name + ".gp", plot_script(scene, dt, runs), "plots/" + name + ".svg");
+        const Drawn drawn = draw_with_gnuplot(dir, "plots/" + name + ".gp", plot_script(scene, dt, runs, set), "plots/" + name + ".svg");
         md += fmt::format("### `{}`, dt = {:g} s\n\n", scene, dt);
         md += drawn.ok ? fmt::format("![energy error, {} dt = {:g}](plots/{}.svg)\n\n", scene, dt, name)
                        : fmt::format("(plot not drawn: {}; script `plots/{}.gp`)\n\n", drawn.why, name);

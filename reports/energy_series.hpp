@@ -4,7 +4,7 @@
 // against the ordering the seed publishes.
 #pragma once
 
-#include "harness/engine/run.hpp"
+#include "harness/analysis/result_set.hpp"
 #include "harness/io/output_dir.hpp"
 #include "reports/executor.hpp"
 
@@ -16,7 +16,7 @@ namespace rotbench {
 
 // Writes DIR/series/*.csv and DIR/plots/energy_*.{gp,svg}; returns the Markdown section
 // (empty when no run recorded a series); the plots are drawn through `executor`.
-std::string energy_series_section(const std::vector<RunResult>& results, const OutputDir& dir,
+std::string energy_series_section(const ResultSet& set, const OutputDir& dir,
                                   const Executor& executor = run_serially);
 
 }  // namespace rotbench

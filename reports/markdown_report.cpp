@@ -8,10 +8,14 @@
 #include "reports/energy_series.hpp"
 #include "harness/analysis/expected_orders.hpp"
 #include "harness/analysis/orders.hpp"
-#include "reports/ranking.hpp"
+#include "reports/answer.hpp"
+#include "reports/panels.hpp"
+#include "reports/stability_report.hpp"
+#include "reports/verdicts.hpp"
 #include "reports/seed_table1.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -68,82 +72,13 @@ const OrderRow* find_order(const std::vector<OrderRow>& orders, const std::strin
 
 std::string order_cell(const OrderRow* o) {
     if (!o) return "—";
-    if (!o->fit.sufficient) return "insufficient";
+    if (o->status != OrderStatus::fit) return status_name(o->status);
     return fmt::format("{:.2f} [{:.2f}, {:.2f}]", o->fit.order, o->fit.order_lo, o->fit.order_hi);
 }
 
-// The value of `metric` at the finest dt that every scheme ran without failing on `scene`.
-std::pair<double, std::map<std::string, double>> at_common_dt(const std::vector<RunResult>& results,
-                                                               const std::string& scene, const std::string& metric) {
-    std::map<double, std::map<std::string, double>> by_dt;
-    std::set<std::string> schemes;
-    for (const auto& r : results)
-        if (r.spec.scene == scene) {
-            schemes.insert(r.spec.scheme);
-            if (std::isfinite(r.value(metric))) by_dt[r.spec.dt][r.spec.scheme] = r.value(metric);
-        }
-    for (auto it = by_dt.begin(); it != by_dt.end(); ++it)  // finest first
-        if (it->second.size() == schemes.size()) return {it->first, it->second};
-    return {NAN, {}};
-}
-
-// Cost per step relative to `direct`: the geometric mean over every (scene, dt) both ran.
-std::map<std::string, double> relative_cost(const std::vector<RunResult>& results) {
-    std::map<std::tuple<std::string, double>, double> direct;
-    for (const auto& r : results)
-        if (r.spec.scheme == "direct" && std::isfinite(r.value("ns_per_step"))) direct[{r.spec.scene, r.spec.dt}] = r.value("ns_per_step");
-    std::map<std::string, std::pair<double, int>> sums;
-    for (const auto& r : results) {
-        const auto it = direct.find({r.spec.scene, r.spec.dt});
-        if (it == direct.end() || !std::isfinite(r.value("ns_per_step"))) continue;
-        sums[r.spec.scheme].first += std::log(r.value("ns_per_step") / it->second);
-        sums[r.spec.scheme].second += 1;
-    }
-    std::map<std::string, double> out;
-    for (const auto& [scheme, s] : sums) out[scheme] = std::exp(s.first / s.second);
-    return out;
-}
-
-void summary_section(std::string& md, const std::vector<RunResult>& results, const std::vector<OrderRow>& orders) {
-    const auto scenes = unique_in_order(results, &RunSpec::scene);
-    std::vector<std::string> order_scenes;  // scenes with a reference: orders of omega_err_max
-    for (const auto& s : scenes)
-        if (std::any_of(results.begin(), results.end(), [&](const RunResult& r) { return r.spec.scene == s && r.has("omega_err_max"); }))
-            order_scenes.push_back(s);
-    const std::string error_scene = std::find(scenes.begin(), scenes.end(), "asymmetric_free") != scenes.end()
-                                        ? "asymmetric_free" : (order_scenes.empty() ? "" : order_scenes.front());
-    const std::string energy_scene = std::find(scenes.begin(), scenes.end(), "fibre_bounce") != scenes.end()
-                                         ? "fibre_bounce" : (scenes.empty() ? "" : scenes.front());
-    const auto [error_dt, errors] = error_scene.empty() ? std::pair<double, std::map<std::string, double>>{NAN, {}}
-                                                        : at_common_dt(results, error_scene, "omega_err_max");
-    const auto [energy_dt, drifts] = at_common_dt(results, energy_scene, "energy_drift_max");
-    const auto cost = relative_cost(results);
-
-    md += "## Summary\n\nObserved order of the angular-velocity error (`omega_err_max`) per scene, with its 95 % "
-          "interval; the error and the energy drift at one step size common to all schemes; cost per step "
-          "relative to `direct` (geometric mean over every scene and step both ran).\n\n";
-    std::vector<std::string> summary_columns;
-    for (const auto& s : order_scenes) summary_columns.push_back("order, " + s);
-    summary_columns.push_back(fmt::format("omega_err_max, {} dt = {:g}", error_scene, error_dt));
-    summary_columns.push_back(fmt::format("energy_drift_max, {} dt = {:g}", energy_scene, energy_dt));
-    summary_columns.push_back("cost / direct");
-    md += table_head("scheme", summary_columns);
-    for (const auto& scheme : unique_in_order(results, &RunSpec::scheme)) {
-        md += "| " + scheme + " |";
-        for (const auto& s : order_scenes) md += " " + order_cell(find_order(orders, s, scheme, "omega_err_max")) + " |";
-        auto get = [](const std::map<std::string, double>& m, const std::string& k) {
-            const auto it = m.find(k);
-            return it == m.end() ? std::string("—") : fmt::format("{:.2e}", it->second);
-        };
-        md += fmt::format(" {} | {} | {} |\n", get(errors, scheme), get(drifts, scheme),
-                          cost.count(scheme) ? fmt::format("{:.2f}", cost.at(scheme)) : "—");
-    }
-    md += "\n";
-}
-
-void scene_section(std::string& md, const SceneInfo& entry, const std::vector<RunResult>& results,
-                   const std::vector<OrderRow>& orders, const OutputDir& dir,
-                   const std::map<std::string, double>& instructions, const std::vector<ExpectedOrder>& claimed) {
+void scene_section(std::string& md, const SceneInfo& entry, const ResultSet& set, const std::vector<OrderRow>& orders,
+                   const OutputDir& dir, const std::vector<std::string>& best, const std::vector<ExpectedOrder>& claimed) {
+    const std::vector<RunResult>& results = set.runs;
     const std::string& scene_id = entry.id;
     std::vector<const RunResult*> runs;
     for (const auto& r : results)
@@ -164,7 +99,7 @@ void scene_section(std::string& md, const SceneInfo& entry, const std::vector<Ru
         md += "\n\n";
     }
     if (!entry.notes.empty()) md += entry.notes + "\n\n";
-    md += convergence_plots(scene_id, entry.bodies, runs, dir, instructions);
+    md += convergence_plots(scene_id, runs, set, dir, best);
 
     // Observed orders of each fitted metric, with the expected one where theory gives it.
     // Expected orders are known for torque-free scenes and orientation-dependent torques; a
@@ -188,16 +123,22 @@ void scene_section(std::string& md, const SceneInfo& entry, const std::vector<Ru
     }
     md += "\n";
 
+    // Every run, in tables of at most 7 columns: scheme, dt and 5 metrics each.
     const auto columns = present(table_metrics, runs);
-    std::vector<std::string> run_columns = {"dt (s)"};
-    run_columns.insert(run_columns.end(), columns.begin(), columns.end());
-    md += "<details><summary>Every run</summary>\n\n" + table_head("scheme", run_columns);
-    for (const RunResult* r : runs) {
-        md += fmt::format("| {} | {:g} |", r->spec.scheme, r->spec.dt);
-        for (const auto& c : columns) md += " " + cell(c, r->value(c)) + " |";
+    md += "<details><summary>Every run</summary>\n\n";
+    for (std::size_t from = 0; from < columns.size(); from += 5) {
+        const std::vector<std::string> part(columns.begin() + from, columns.begin() + std::min(columns.size(), from + 5));
+        std::vector<std::string> run_columns = {"dt (s)"};
+        run_columns.insert(run_columns.end(), part.begin(), part.end());
+        md += table_head("scheme", run_columns);
+        for (const RunResult* r : runs) {
+            md += fmt::format("| {} | {:g} |", r->spec.scheme, r->spec.dt);
+            for (const auto& c : part) md += " " + cell(c, r->value(c)) + " |";
+            md += "\n";
+        }
         md += "\n";
     }
-    md += "\n</details>\n\n";
+    md += "</details>\n\n";
     for (const RunResult* r : runs)
         if (!r->failure.empty())
             md += fmt::format("- **{} at dt = {:g} failed**: {}.\n", r->spec.scheme, r->spec.dt, r->failure);
@@ -259,37 +200,79 @@ void schemes_section(std::string& md, const ResultSet& set, const std::vector<Ex
     md += "\n";
 }
 
+// A heading's anchor as GitHub makes it: lower case, punctuation dropped, spaces to hyphens.
+std::string anchor(const std::string& heading) {
+    std::string out;
+    for (const char c : heading) {
+        if (std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-') out += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+        else if (c == ' ') out += '-';
+    }
+    return out;
+}
+
+std::string link(const std::string& text, const std::string& heading) { return "[" + text + "](#" + anchor(heading) + ")"; }
+
 }  // namespace
 
 std::string markdown_report(const ResultSet& set, const std::string& command_line, const OutputDir& dir,
-                            const Executor& executor) {
+                            const ReportOptions& options, const Executor& executor) {
     const std::vector<RunResult>& results = set.runs;
     std::vector<ExpectedOrder> expected;
     for (const auto& [id, info] : set.schemes) add_expected_orders(id, info.claims, expected);
-    std::string md = "# rotbench report\n\n";
-    const Provenance p = provenance();
-    md += fmt::format("rotbench {} (commit {}), {} {}, flags `{}`, on {}; generated {} {} UTC.\n\n", p.version, p.commit,
-                      p.compiler, p.build_type, p.flags, p.cpu, p.date.substr(0, 10), p.date.substr(11, 5));
-    md += fmt::format("Command: `{}`\n\n", command_line);
-    const auto unstable = std::count_if(results.begin(), results.end(), [](const RunResult& r) { return r.value("unstable") != 0.0; });
-    md += fmt::format("{} runs, {} unstable or failed. Errors are in rad/s (angular velocity) and rad (orientation); "
-                      "drifts are relative; ns_per_step is the median per-thread CPU time of a run without the "
-                      "metrics, divided by its steps.\n\n",
-                      results.size(), unstable);
     const auto orders = observed_orders(results);
-    summary_section(md, results, orders);
-    md += ranking_section(set, orders);
+    const auto answers = largest_dts(set, orders, options.tolerances, options.stability);
+    dir.write("answer.csv", answer_csv(answers));
+    const auto scenes = unique_in_order(results, &RunSpec::scene);
+    const auto schemes = unique_in_order(results, &RunSpec::scheme);
+
+    const Provenance p = provenance();
+    const auto failed = std::count_if(results.begin(), results.end(), [](const RunResult& r) { return r.value("unstable") != 0.0; });
+    std::string md = "# rotbench report\n\n";
+    md += fmt::format(
+        "{} runs of {} scheme{} on {} scene{}, {} of them unstable or failed: which scheme meets which error at what dt, "
+        "and at what cost. Errors are in rad/s (angular velocity) and rad (orientation), drifts relative; the cost figure "
+        "is `ns_per_step` (section {}). rotbench {} (commit {}), {} {}, flags `{}`, on {}; generated {} {} UTC by `{}`.\n\n",
+        results.size(), schemes.size(), schemes.size() == 1 ? "" : "s", scenes.size(), scenes.size() == 1 ? "" : "s", failed, link("Verdicts", "Verdicts"), p.version, p.commit, p.compiler,
+        p.build_type, p.flags, p.cpu, p.date.substr(0, 10), p.date.substr(11, 5), command_line);
+
+    const std::string answer_heading = "The answer: the largest dt for a tolerance";
+    md += "## Contents\n\n- " + link("Verdicts", "Verdicts") + " · " + link("The answer", answer_heading) + " · " +
+          link("Stability limits", "Stability limits") + " · " + link("Cost", cost_heading) + "\n- Scenes:";
+    for (std::size_t i = 0; i < scenes.size(); ++i)
+        md += (i ? "," : "") + std::string(" ") + link("`" + scenes[i] + "`", "Scene `" + scenes[i] + "`");
+    md += "\n- " + link("Seed Table 1", "Seed Table 1 reproduced") + " · " + link("Energy against time", "Energy against time") +
+          " · " + link("Schemes", "Schemes: sources, readings, and what each claims") + " · " +
+          link("Metrics and the order fit", "Metrics and the order fit") + "\n\n";
+
+    md += verdict_section(set, orders, options.stability);
+    md += answer_section(set, answers, options.tolerances);
+    md += stability_summary(options.stability, set, dir);
     md += cost_section(dir.path());
-    const auto instructions = instructions_per_body_step(dir.path());  // the cost table, read once for every scene's plots
+
+    // The overview panel of each scene's plots: per family, the scheme that reaches the
+    // strictest tolerance at the least CPU time there (or, without a reference, the smallest
+    // plotted error at the finest step).
+    const double strictest = *std::min_element(options.tolerances.begin(), options.tolerances.end());
+    const auto best_on = [&](const std::string& scene) {
+        return best_of_families(set, schemes, [&](const std::string& scheme) {
+            for (const auto& a : answers)
+                if (a.scene == scene && a.scheme == scheme && a.tolerance == strictest)
+                    return std::isfinite(a.cpu_seconds) ? a.cpu_seconds : INFINITY;
+            double dt = INFINITY, e = INFINITY;
+            for (const auto& r : results)
+                if (r.spec.scene == scene && r.spec.scheme == scheme && r.spec.dt < dt) dt = r.spec.dt, e = r.value("energy_drift_max");
+            return std::isfinite(e) ? e : INFINITY;
+        });
+    };
     // The scenes' sections on every core: most of their time is gnuplot drawing the plots,
     // one process at a time otherwise. Each section is its own string; they join in order.
-    const auto scenes = unique_in_order(results, &RunSpec::scene);
     std::vector<std::string> sections(scenes.size());
-    executor(scenes.size(),
-             [&](std::size_t i) { scene_section(sections[i], set.scene(scenes[i]), results, orders, dir, instructions, expected); });
+    executor(scenes.size(), [&](std::size_t i) {
+        scene_section(sections[i], set.scene(scenes[i]), set, orders, dir, best_on(scenes[i]), expected);
+    });
     for (const auto& section : sections) md += section;
     table1_section(md, results);
-    md += energy_series_section(results, dir, executor);
+    md += energy_series_section(set, dir, executor);
     schemes_section(md, set, expected);
     md += "## Metrics and the order fit\n\n"
           "- `omega_rms_x/y/z`: root mean square over all steps of the body-frame angular-velocity error "
@@ -310,7 +293,8 @@ std::string markdown_report(const ResultSet& set, const std::string& command_lin
           "range only. Failed runs and errors below 1e-13 are dropped; from the coarsest step, the first "
           "error not below 0.9 times the previous one starts a round-off plateau, dropped with every finer "
           "step; the range is then the longest run ending at the finest step whose local orders lie within "
-          "0.3 of their median. Fewer than 3 points: \"insufficient\".\n";
+          "0.3 of their median. Fewer than 3 points: \"insufficient\"; round-off only: \"exact\"; an error that does not halve "
+          "over a 4x range of dt: \"no_convergence\" (`orders.csv`'s `status`).\n";
     return md;
 }
 

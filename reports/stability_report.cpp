@@ -2,6 +2,7 @@
 
 #include "harness/io/output_files.hpp"
 #include "reports/gnuplot.hpp"
+#include "reports/panels.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -10,31 +11,95 @@
 
 namespace rotbench {
 
-std::string spectral_radius_plots(const std::vector<SpectralCurve>& curves, const OutputDir& dir) {
+namespace {
+
+std::string number(double v) {
+    return std::isnan(v) ? std::string("—") : std::isinf(v) ? std::string("none found") : fmt::format("{:.4e}", v);
+}
+
+std::vector<std::string> schemes_of(const std::vector<StabilityRow>& rows) {
+    std::vector<std::string> out;
+    for (const auto& r : rows)
+        if (std::find(out.begin(), out.end(), r.scheme) == out.end()) out.push_back(r.scheme);
+    return out;
+}
+
+// The limits against zeta on one contact scene: a line per scheme, Peng's prediction in each panel.
+// `stem`: the files' name before the scene's (the report's and stability.md's are apart, each
+// command replacing only its own files).
+std::string limit_plot(const std::string& stem, const std::string& scene, const std::vector<const StabilityRow*>& list,
+                       const ResultSet& set, const OutputDir& dir) {
+    const std::string name = stem + scene;
+    std::vector<std::string> schemes;
+    for (const auto* r : list)
+        if (std::find(schemes.begin(), schemes.end(), r->scheme) == schemes.end()) schemes.push_back(r->scheme);
+    std::string data;
+    for (const auto& s : schemes) {
+        for (const auto* r : list)
+            if (r->scheme == s) data += fmt::format("{} {} {}\n", r->zeta, format_number(r->dt_empirical), format_number(r->dt_peng));
+        data += "\n\n";
+    }
+    dir.write("plots/" + name + ".dat", data);
+    const auto panels = family_panels(set, schemes);
+    const std::string setup = fmt::format("set xlabel 'damping ratio zeta (-)'\nset ylabel 'largest stable dt (s)'\nset logscale y\n"
+                                          "set format y '%g'\nset grid\nfile = '{}.dat'\n", name);
+    const std::string script = panel_grid_script(
+        gnuplot_output(name + ".svg"), scene + ": stability limit against damping ratio", setup, panels,
+        [&](std::size_t p) {
+            std::string line = "plot ";
+            for (std::size_t i = 0; i < panels[p].schemes.size(); ++i)
+                line += fmt::format("file index {} using 1:2 with linespoints {} title '{}', ",
+                                    std::find(schemes.begin(), schemes.end(), panels[p].schemes[i]) - schemes.begin(), series_style(i),
+                                    panels[p].schemes[i]);
+            return line + "file index 0 using 1:3 with lines dt 2 lc 'black' title 'Peng (eq. 46)'\n";
+        });
+    const Drawn drawn = draw_with_gnuplot(dir, "plots/" + name + ".gp", script, "plots/" + name + ".svg");
+    return drawn.ok ? fmt::format("![stability, {}](plots/{}.svg)\n\n", scene, name) : fmt::format("(plot not drawn: {})\n\n", drawn.why);
+}
+
+const char* criterion_text =
+    "Criterion, the same for the runs and the eigenvalues: unstable when the energy grows by {:g} within {:g} periods "
+    "of the fastest contact mode (2 pi / sqrt(k A_max)), i.e. rho^(2N) >= {:g} over those N steps. *weak*: rho > 1 at "
+    "every dt (rho - 1 ~ dt^2): such a scheme gains energy at any step, and its limit is only where the gain over the "
+    "horizon reaches the criterion. Peng's step is safe where it is at most the measured limit (measured / Peng >= 1). "
+    "`fast_spin` (rotation-dominant, eq. 57) has no eigenvalue limit: a spin is not a state at rest to linearise about; "
+    "its horizon counts spin periods, and its limits scale as 1/w_max, so they are given as dt w_max (rad).";
+
+}  // namespace
+
+std::string spectral_radius_plots(const std::vector<SpectralCurve>& curves, const ResultSet& set, const OutputDir& dir) {
     std::string md;
     std::vector<std::string> scenes;
     for (const auto& c : curves)
         if (std::find(scenes.begin(), scenes.end(), c.scene) == scenes.end()) scenes.push_back(c.scene);
     for (const auto& id : scenes) {
-        std::string data, names;
+        std::string data;
+        std::vector<std::string> schemes;
         double dt_peng = 0;
         for (const auto& c : curves) {
             if (c.scene != id) continue;
             for (const auto& [dt, rho] : c.points) data += fmt::format("{} {}\n", format_number(dt), format_number(rho));
             data += "\n\n";
-            names += (names.empty() ? "" : " ") + c.scheme;
+            schemes.push_back(c.scheme);
             dt_peng = c.dt_peng;
         }
         dir.write(fmt::format("plots/spectral_radius_{}.dat", id), data);
-        const std::string script = fmt::format(
-            "set terminal svg size 800,450 dynamic noenhanced font 'sans,12'\n{3}"
-            "set title '{0} (undamped): spectral radius of the step map'\nset xlabel 'dt (s)'\nset ylabel 'rho - 1'\n"
-            "set logscale xy\nset format y '%.0e'\nset grid\nset key outside right\nset yrange [1e-10:*]\n"
-            "names = '{1}'\nfile = 'spectral_radius_{0}.dat'\n"
-            "set arrow from {2},graph 0 to {2},graph 1 nohead dt 2 lc 'black'\n"
-            "set label 'Peng' at {2},graph 0.95 offset 0.5,0\n"
-            "plot for [i=1:words(names)] file index (i-1) using 1:($2-1) with linespoints pt (7 - 2*((i-1)/8)) dt 1+(i-1)/8 ps 0.5 title word(names, i)\n",
-            id, names, format_number(dt_peng), gnuplot_output(fmt::format("spectral_radius_{}.svg", id)));
+        const auto panels = family_panels(set, schemes);
+        const std::string setup = fmt::format(
+            "set xlabel 'dt (s)'\nset ylabel 'rho - 1 (-)'\nset logscale xy\nset format x '%g'\nset format y '%.0e'\nset grid\n"
+            "set yrange [1e-10:*]\nfile = 'spectral_radius_{0}.dat'\n"
+            "set arrow 1 from {1},graph 0 to {1},graph 1 nohead dt 2 lc 'black'\nset label 1 'Peng' at {1},graph 0.95 offset 0.5,0\n",
+            id, format_number(dt_peng));
+        const std::string script = panel_grid_script(
+            gnuplot_output(fmt::format("spectral_radius_{}.svg", id)), id + " (undamped): spectral radius of the step map", setup, panels,
+            [&](std::size_t p) {
+                std::string line = "plot ";
+                for (std::size_t i = 0; i < panels[p].schemes.size(); ++i)
+                    line += fmt::format("{}file index {} using 1:($2-1) with linespoints {} ps 0.5 title '{}'", i ? ", " : "",
+                                        std::find(schemes.begin(), schemes.end(), panels[p].schemes[i]) - schemes.begin(),
+                                        series_style(i), panels[p].schemes[i]);
+                return line + "\n";
+            });
         const Drawn drawn = draw_with_gnuplot(dir, fmt::format("plots/spectral_radius_{}.gp", id), script,
                                               fmt::format("plots/spectral_radius_{}.svg", id));
         md += drawn.ok ? fmt::format("![spectral radius, {0}](plots/spectral_radius_{0}.svg)\n\n", id)
@@ -43,62 +108,96 @@ std::string spectral_radius_plots(const std::vector<SpectralCurve>& curves, cons
     return md;
 }
 
-std::string stability_section(const std::vector<StabilityRow>& rows, const OutputDir& dir) {
-    std::string md = fmt::format(
-        "## Stability limits\n\n"
-        "For each scene (damping ratio zeta or spin rate w_max) and scheme: the largest stable dt measured (bracketing and "
-        "bisection to 0.5 %), the limit from the eigenvalues of the scheme's own linearised step map, and the "
-        "prediction of Peng et al. (seed 004, eq. 46; eq. 47 undamped). Criterion, the same for both: unstable "
-        "when the energy grows by {:g} within {:g} periods of the fastest contact mode (2 pi / sqrt(k A_max)), "
-        "i.e. rho^(2N) >= {:g} over those N steps. \"weak\": rho > 1 at every dt (rho - 1 ~ dt^2): such a scheme "
-        "gains energy at any step, and its limit is only where the gain over the horizon reaches the criterion. "
-        "Peng's step is conservative where it is at most the measured limit. `fast_spin` (rotation-dominant, eq. 57) "
-        "has no eigenvalue limit here: a spin is not a state at rest to linearise about; its horizon counts spin "
-        "periods.\n\n"
-        "| scene | zeta | w_max (rad/s) | scheme | measured (s) | eigenvalues (s) | Peng (s) | measured / Peng | Peng conservative? | Verlet, normal mode (s) |\n"
-        "|---|---:|---:|---|---:|---:|---:|---:|---|---:|\n",
-        stability_growth, stability_horizon_periods, stability_growth);
-    for (const auto& r : rows) {
-        const double ratio = r.dt_empirical / r.dt_peng;
-        auto number = [](double v) {
-            return std::isnan(v) ? std::string("—") : std::isinf(v) ? std::string("none found") : fmt::format("{:.4e}", v);
-        };
-        md += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |\n", r.scene,
-                          r.omega_max > 0 ? "—" : fmt::format("{:g}", r.zeta), r.omega_max > 0 ? fmt::format("{:g}", r.omega_max) : "—",
-                          r.scheme + (r.unstable_at_every_dt ? " (weak)" : ""), number(r.dt_empirical),
-                          number(r.dt_amplification), number(r.dt_peng),
-                          std::isinf(ratio) ? std::string("∞") : fmt::format("{:.3f}", ratio), ratio >= 1.0 ? "yes" : "**no**",
-                          number(r.dt_verlet_normal));
-    }
-    // Limit against zeta, per scene: one line per scheme and Peng's prediction.
+std::string stability_section(const std::vector<StabilityRow>& rows, const ResultSet& set, const OutputDir& dir) {
+    std::string md = "## Stability limits\n\n" +
+                     fmt::format(fmt::runtime(std::string("For each scene (damping ratio zeta or spin rate w_max) and scheme: the largest "
+                                 "stable dt measured (bracketing and bisection to 0.5 %), the limit from the eigenvalues of the "
+                                 "scheme's own linearised step map, and the prediction of Peng et al. (seed 004, eq. 46; eq. 47 "
+                                 "undamped); `stability.csv` adds the textbook Verlet limit of the normal mode. ") + criterion_text),
+                                 stability_growth, stability_horizon_periods, stability_growth) +
+                     "\n\n| scene | zeta or w_max | scheme | kind | measured (s) | eigenvalues (s) | Peng (s) |\n"
+                     "|---|---:|---|---|---:|---:|---:|\n";
+    for (const auto& r : rows)
+        md += fmt::format("| {} | {} | {} | {} | {} | {} | {} |\n", r.scene,
+                          r.omega_max > 0 ? fmt::format("w {:g} rad/s", r.omega_max) : fmt::format("zeta {:g}", r.zeta), r.scheme,
+                          stability_kind(r), number(r.dt_empirical), number(r.dt_amplification), number(r.dt_peng));
+    md += "\n";
     std::map<std::string, std::vector<const StabilityRow*>> by_scene;
     for (const auto& r : rows)
         if (r.omega_max == 0) by_scene[r.scene].push_back(&r);
-    md += "\n";
-    for (const auto& [scene, list] : by_scene) {
-        std::string data, names;
-        std::vector<std::string> schemes;
-        for (const auto* r : list)
-            if (std::find(schemes.begin(), schemes.end(), r->scheme) == schemes.end()) schemes.push_back(r->scheme);
-        for (const auto& s : schemes) {
-            names += (names.empty() ? "" : " ") + s;
-            for (const auto* r : list)
-                if (r->scheme == s) data += fmt::format("{} {} {} {}\n", r->zeta, format_number(r->dt_empirical),
-                                                        format_number(r->dt_amplification), format_number(r->dt_peng));
-            data += "\n\n";
+    for (const auto& [scene, list] : by_scene) md += limit_plot("stability_", scene, list, set, dir);
+    return md;
+}
+
+std::string stability_summary(const std::vector<StabilityRow>& rows, const ResultSet& set, const OutputDir& dir) {
+    if (rows.empty())
+        return "## Stability limits\n\nNo stability study here: `rotbench stability --out DIR` writes `stability.csv` beside "
+               "the runs, and `rotbench report DIR` then includes it.\n\n";
+    std::string md = "## Stability limits\n\n" +
+                     fmt::format(fmt::runtime(std::string("Measured limit over Peng et al.'s prediction (seed 004, eq. 46; eq. 47 "
+                                 "undamped) for each contact scene and damping ratio, from `stability.csv` (the limits themselves, "
+                                 "the eigenvalue limits and the spectral radii are in `stability.md` where `rotbench stability` "
+                                 "wrote it). ") + criterion_text),
+                                 stability_growth, stability_horizon_periods, stability_growth) + "\n\n";
+    std::map<std::string, std::vector<const StabilityRow*>> by_scene;
+    std::vector<std::string> scene_order;
+    for (const auto& r : rows) {
+        if (!by_scene.count(r.scene)) scene_order.push_back(r.scene);
+        by_scene[r.scene].push_back(&r);
+    }
+    for (const auto& scene : scene_order) {
+        const auto& list = by_scene[scene];
+        const bool spin = list.front()->omega_max > 0;
+        std::vector<double> keys;
+        for (const auto* r : list) {
+            const double k = spin ? r->omega_max : r->zeta;
+            if (std::find(keys.begin(), keys.end(), k) == keys.end()) keys.push_back(k);
         }
-        dir.write(fmt::format("plots/stability_{}.dat", scene), data);
-        const std::string script = fmt::format(
-            "set terminal svg size 800,450 dynamic noenhanced font 'sans,12'\n{2}"
-            "set title '{0}: stability limit against damping ratio'\nset xlabel 'zeta'\nset ylabel 'dt (s)'\n"
-            "set logscale y\nset grid\nset key outside right\nnames = '{1}'\nfile = 'stability_{0}.dat'\n"
-            "plot for [i=1:words(names)] file index (i-1) using 1:2 with linespoints pt (7 - 2*((i-1)/8)) dt 1+(i-1)/8 title word(names, i), "
-            "file index 0 using 1:4 with lines dt 2 lc 'black' title 'Peng (eq. 46)'\n",
-            scene, names, gnuplot_output(fmt::format("stability_{}.svg", scene)));
-        const Drawn drawn = draw_with_gnuplot(dir, fmt::format("plots/stability_{}.gp", scene), script,
-                                              fmt::format("plots/stability_{}.svg", scene));
-        md += drawn.ok ? fmt::format("![stability, {0}](plots/stability_{0}.svg)\n\n", scene)
-                       : fmt::format("(plot not drawn: {})\n\n", drawn.why);
+        if (keys.size() > 5) keys.resize(5);  // at most 7 columns; every value is in stability.csv
+        md += fmt::format("### `{}`\n\n", scene);
+        if (spin) {
+            md += "| scheme | kind | measured dt w_max (rad) | Peng dt w_max (rad) | measured / Peng |\n|---|---|---:|---:|---:|\n";
+            for (const auto& scheme : schemes_of(rows)) {
+                const StabilityRow* least = nullptr;  // the smallest dt w_max over the spin rates
+                for (const auto* r : list)
+                    if (r->scheme == scheme && (!least || r->dt_empirical * r->omega_max < least->dt_empirical * least->omega_max)) least = r;
+                if (!least) continue;
+                const double m = least->dt_empirical * least->omega_max, p = least->dt_peng * least->omega_max;
+                md += fmt::format("| {} | {} | {} | {:.4g} | {} |\n", scheme, stability_kind(*least),
+                                  std::isinf(m) ? std::string("none found") : fmt::format("{:.4g}", m), p,
+                                  std::isinf(m) ? std::string("∞") : fmt::format("{:.3f}", m / p));
+            }
+        } else {
+            md += "| scheme |";
+            for (double z : keys) md += fmt::format(" zeta = {:g} |", z);
+            md += "\n|---|";
+            for (std::size_t i = 0; i < keys.size(); ++i) md += "---:|";
+            md += "\n";
+            md += "| *Peng's dt (s)* |";
+            for (double z : keys) {
+                const auto it = std::find_if(list.begin(), list.end(), [&](const StabilityRow* r) { return r->zeta == z; });
+                md += fmt::format(" *{:.3g}* |", (*it)->dt_peng);
+            }
+            md += "\n";
+            for (const auto& scheme : schemes_of(rows)) {
+                std::string line = "| " + scheme + " |";
+                bool any = false;
+                for (double z : keys) {
+                    const auto it = std::find_if(list.begin(), list.end(), [&](const StabilityRow* r) { return r->scheme == scheme && r->zeta == z; });
+                    if (it == list.end()) { line += " — |"; continue; }
+                    any = true;
+                    const double ratio = (*it)->dt_empirical / (*it)->dt_peng;
+                    const std::string kind = stability_kind(**it) == "sharp" ? "" : " (" + stability_kind(**it) + ")";
+                    line += std::isinf(ratio) ? " ∞" + kind + " |"
+                            : ratio >= 1.0   ? fmt::format(" {:.3f}{} |", ratio, kind)
+                                             : fmt::format(" **{:.3f}**{} |", ratio, kind);
+                }
+                if (any) md += line + "\n";
+            }
+            md += "\nMeasured / Peng; **bold** where Peng's dt is above the measured limit (unsafe); (weak): see above.\n\n";
+            md += limit_plot("report_stability_", scene, list, set, dir);
+        }
+        md += "\n";
     }
     return md;
 }

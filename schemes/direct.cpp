@@ -30,6 +30,7 @@ ROTBENCH_INLINE Vec3T<S> acceleration(const Vec3T<S>& omega_body, const Vec3T<S>
 
 template <bool Gyroscopic, class S = double>
 struct Direct {
+    static constexpr const char* family = "seed";  // SchemeClaims::family
     template <class T>
     using rebind = Direct<Gyroscopic, T>;
     struct Memory {

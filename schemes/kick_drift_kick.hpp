@@ -40,6 +40,7 @@ concept RotatesPacks = false;
 
 template <class Rotation, class S = double>
 struct KickDriftKick {
+    static constexpr const char* family = "kick_drift_kick";  // SchemeClaims::family
     template <class T>
         requires RotatesPacks<Rotation>
     using rebind = KickDriftKick<Rotation, T>;

@@ -9,7 +9,8 @@
 
 // Raise when anything in schemes/scheme.hpp, schemes/bodies.hpp or schemes/registry.hpp
 // changes layout or meaning. 2: RotationScheme::lanes(). 3: SchemeClaims::time_reversible.
-#define ROTBENCH_PLUGIN_ABI_VERSION 3
+// 4: SchemeClaims::family.
+#define ROTBENCH_PLUGIN_ABI_VERSION 4
 
 #define ROTBENCH_ABI_STR2(x) #x
 #define ROTBENCH_ABI_STR(x) ROTBENCH_ABI_STR2(x)

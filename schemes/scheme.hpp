@@ -46,6 +46,9 @@ struct SchemeClaims {
     bool bounded_energy = false;        // no secular energy drift in a conservative scene (symplectic or reversible)
     bool time_reversible = false;       // stepping back with -dt from the end returns to the start, to round-off
     bool sound = true;                  // false: a deliberately wrong control (no_gyro), expected to fail
+    // Not a claim: the group the report draws the scheme with ("seed", "kick_drift_kick", or
+    // empty for the others). RegisterScheme takes it from the kernel's `family` when not given.
+    std::string family;
 
     bool claims_nothing() const {
         return without_torque.order == 0 && with_torque.order == 0 && !exact_without_torque && !conserves_momentum &&
@@ -178,6 +181,8 @@ template <class Kernel>
 struct RegisterScheme {
     RegisterScheme(std::string id, std::string summary, std::string source, std::string notes = "",
                    SchemeClaims claims = {}) {
+        if constexpr (requires { Kernel::family; })
+            if (claims.family.empty()) claims.family = Kernel::family;
         SchemeRegistry::instance().add({std::move(id), std::move(summary), std::move(source), std::move(notes),
                                         [] { return std::make_unique<BatchedScheme<Kernel>>(); }, std::move(claims)});
     }

@@ -18,6 +18,7 @@ namespace {
 
 template <bool ReestimateTorque, class S = double>
 struct ZhaoVanWachem {
+    static constexpr const char* family = "seed";  // SchemeClaims::family
     template <class T>
     using rebind = ZhaoVanWachem<ReestimateTorque, T>;
     struct Memory {

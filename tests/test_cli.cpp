@@ -59,13 +59,13 @@ TEST_CASE("rotbench report DIR re-renders the same report from the CSVs, and wri
     const fs::path dir = fresh_dir("rerender");
     REQUIRE(cli({"run", "--scenes", "dipole_top,fibre_bounce", "--schemes", "direct,zvw", "--quick", "--out", dir.string()}).status == 0);
     const std::string orders = read(dir / "orders.csv");
-    CHECK(orders.rfind("scene,scheme,metric,order,order_lo,order_hi,dt_min,dt_max,points\n", 0) == 0);
+    CHECK(orders.rfind("scene,scheme,metric,status,order,order_lo,order_hi,dt_min,dt_max,points\n", 0) == 0);
     CHECK_THAT(orders, Catch::Contains("dipole_top,direct,omega_err_max,"));
-    auto body = [](std::string md) {  // without the provenance line and the command, which differ
+    auto body = [](std::string md) {  // without the header paragraph: its provenance and command differ
         std::string out, line;
         std::istringstream in(md);
         while (std::getline(in, line))
-            if (line.rfind("rotbench 0", 0) != 0 && line.rfind("Command:", 0) != 0) out += line + "\n";
+            if (line.find(" UTC by `") == std::string::npos) out += line + "\n";
         return out;
     };
     const std::string first = body(read(dir / "report.md"));
@@ -79,7 +79,7 @@ TEST_CASE("rotbench stability writes stability.csv with the contract header, and
     const fs::path dir = fresh_dir("stability");
     REQUIRE(cli({"stability", "--scenes", "sphere_pair", "--schemes", "direct", "--zeta", "0", "--out", dir.string()}).status == 0);
     const std::string csv = read(dir / "stability.csv");
-    CHECK(csv.rfind("scene,scheme,zeta,dt_empirical,dt_amplification,dt_peng\n", 0) == 0);
+    CHECK(csv.rfind("scene,scheme,zeta,kind,dt_empirical,dt_amplification,dt_peng,dt_verlet_normal\n", 0) == 0);
     CHECK_THAT(read(dir / "stability.md"), Catch::Contains("## Stability limits"));
     CHECK(cli({"stability", "--scenes", "cylinder_free", "--out", (dir / "x").string()}).status == 2);
     CHECK(cli({"stability", "--zeta", "-1", "--out", (dir / "y").string()}).status == 2);

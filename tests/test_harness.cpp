@@ -178,7 +178,7 @@ TEST_CASE("a sweep with a run that blows up finishes, and its report says which 
                                    "--out", dir.string()});
     REQUIRE(r.status == 0);
     const std::string report = test::read(dir / "report.md");
-    CHECK_THAT(report, Catch::Contains("2 runs, 1 unstable or failed."));
+    CHECK_THAT(report, Catch::Contains("2 runs of 2 schemes on 1 scene, 1 of them unstable or failed"));
     // |w| doubles per step: E passes E0 + 1e6 x E0 first at step 10 (see above).
     CHECK_THAT(report, Catch::Contains("- **test_explodes at dt = 0.001 failed**: blew up at step 10 (t = 0.01 s)."));
     CHECK_THAT(r.out, Catch::Contains("FAILED: blew up at step 10"));

@@ -1,9 +1,39 @@
 #include "harness/analysis/orders.hpp"
 
+#include "harness/analysis/round_off.hpp"
+
+#include <algorithm>
+#include <cmath>
 #include <fmt/format.h>
 #include <map>
 
 namespace rotbench {
+
+const char* status_name(OrderStatus status) {
+    switch (status) {
+        case OrderStatus::fit: return "fit";
+        case OrderStatus::insufficient: return "insufficient";
+        case OrderStatus::exact: return "exact";
+        case OrderStatus::no_convergence: return "no_convergence";
+    }
+    return "insufficient";
+}
+
+OrderStatus order_status(const std::vector<const RunResult*>& runs, const std::string& metric, const OrderFit& fit) {
+    std::vector<const RunResult*> usable;
+    for (const RunResult* r : runs)
+        if (r->has(metric) && std::isfinite(r->value(metric))) usable.push_back(r);
+    if (usable.empty()) return OrderStatus::insufficient;
+    if (std::all_of(usable.begin(), usable.end(), [&](const RunResult* r) { return r->value(metric) <= round_off_bound(*r, metric); }))
+        return OrderStatus::exact;
+    if (fit.sufficient) return OrderStatus::fit;
+    const auto [fine, coarse] = std::minmax_element(usable.begin(), usable.end(),
+                                                    [](const RunResult* a, const RunResult* b) { return a->spec.dt < b->spec.dt; });
+    const double e_fine = (*fine)->value(metric), e_coarse = (*coarse)->value(metric);
+    if ((*coarse)->spec.dt >= 4.0 * (*fine)->spec.dt && e_fine > round_off_bound(**fine, metric) && !(e_fine < 0.5 * e_coarse))
+        return OrderStatus::no_convergence;
+    return OrderStatus::insufficient;
+}
 
 std::vector<OrderRow> observed_orders(const std::vector<RunResult>& results) {
     // Keyed in order of first appearance, so the files follow the sweep's order.
@@ -21,7 +51,9 @@ std::vector<OrderRow> observed_orders(const std::vector<RunResult>& results) {
             for (const RunResult* r : runs[key])
                 if (r->has(metric)) points.push_back({r->spec.dt, r->value(metric)});
             if (points.empty()) continue;
-            rows.push_back({key.first, key.second, metric, fit_order(points)});
+            OrderFit fit = fit_order(points);
+            const OrderStatus status = order_status(runs[key], metric, fit);
+            rows.push_back({key.first, key.second, metric, std::move(fit), status});
         }
     return rows;
 }

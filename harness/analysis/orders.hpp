@@ -14,10 +14,23 @@ namespace rotbench {
 inline const std::vector<std::string> order_metrics = {"omega_err_max", "orientation_err_max", "omega_rms_x",
                                                        "energy_drift_max", "momentum_drift_max"};
 
+// What the runs of one (scene, scheme, metric) show:
+//   exact           every finite error is within its round-off bound (round_off.hpp);
+//   fit             an order was fitted (order_fit.hpp);
+//   no_convergence  the error at the finest usable step is not below half the error at the
+//                   coarsest, over a ladder at least 4x wide: it does not fall with dt;
+//   insufficient    none of these: too few points in the asymptotic range to fit.
+enum class OrderStatus { fit, insufficient, exact, no_convergence };
+const char* status_name(OrderStatus status);
+
 struct OrderRow {
     std::string scene, scheme, metric;
     OrderFit fit;
+    OrderStatus status = OrderStatus::insufficient;
 };
+
+// From the runs of one scene and scheme (any order of dt) and their fit.
+OrderStatus order_status(const std::vector<const RunResult*>& runs, const std::string& metric, const OrderFit& fit);
 
 std::vector<OrderRow> observed_orders(const std::vector<RunResult>& results);
 

@@ -1,5 +1,7 @@
 #include "harness/analysis/result_set.hpp"
 
+#include "harness/scenes/stability_probe.hpp"
+
 namespace rotbench {
 
 SchemeInfo scheme_info(const std::string& id) {
@@ -22,6 +24,10 @@ ResultSet describe(std::vector<RunResult> runs) {
                                         scene->conserves_angular_momentum(),
                                         scene->torque_depends_on_orientation(),
                                         scene->initial_state().size()};
+            auto& info = set.scenes[r.spec.scene];
+            info.stability_scene = dynamic_cast<const StabilityProbe*>(scene.get()) != nullptr;
+            for (const auto& p : scene->params.entries())
+                if (p.key == "zeta" && p.value.size() == 1) info.zeta = p.value.front();
         }
         if (!set.schemes.count(r.spec.scheme) && SchemeRegistry::instance().contains(r.spec.scheme))
             set.schemes[r.spec.scheme] = scheme_info(r.spec.scheme);

@@ -18,6 +18,8 @@ struct SceneInfo {
     Scene::ReferenceKind reference = Scene::ReferenceKind::none;
     bool conserves_energy = false, conserves_angular_momentum = false, torque_depends_on_orientation = false;
     std::size_t bodies = 0;
+    bool stability_scene = false;  // one of the stability study's (a StabilityProbe)
+    double zeta = 0;               // its damping ratio, for a contact scene
 };
 
 struct SchemeInfo {

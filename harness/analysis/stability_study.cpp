@@ -12,6 +12,12 @@
 
 namespace rotbench {
 
+std::string stability_kind(const StabilityRow& row) {
+    if (row.unstable_at_every_dt || row.dt_empirical == 0.0) return "weak";
+    if (std::isinf(row.dt_empirical)) return "none";
+    return "sharp";
+}
+
 namespace {
 
 ParamOverrides overrides(const StabilityRow& r) {

@@ -16,6 +16,13 @@ struct StabilityRow {
     bool unstable_at_every_dt = false;  // rho > 1 + 1e-6 already at dt_peng / 100
 };
 
+// How a scheme loses stability on the row's scene (stability.csv's `kind`):
+//   sharp  stable below a limit, unstable above it;
+//   weak   unstable at every dt, its limit only where the gain over the horizon reaches the
+//          criterion (rho > 1 however small dt, or no stable dt found at all);
+//   none   no limit found up to 2^30 times the first guess.
+std::string stability_kind(const StabilityRow& row);
+
 // The criterion: energy growth by 1e6 within 1000 periods of the fastest contact mode.
 inline constexpr double stability_horizon_periods = 1000.0;
 inline constexpr double stability_growth = 1e6;

@@ -88,9 +88,10 @@ void list_markdown(std::ostream& out) {
         const auto scene = make_scene(id);
         std::string dts;
         for (double dt : scene->default_dts()) dts += fmt::format("{}{:g}", dts.empty() ? "" : ", ", dt);
-        out << fmt::format("\n### `{}`\n\n{}. Source: {}. Default ladder: dt = {} s.\n\n| key | default | unit | meaning |\n"
+        out << fmt::format("\n### `{}`\n\n{}. Source: {}. Default ladder: dt = {} s.{}\n\n| key | default | unit | meaning |\n"
                            "|---|---|---|---|\n",
-                           id, e.summary, e.source, dts);
+                           id, e.summary, e.source, dts,
+                           scene->in_default_suite() ? "" : " Not in the default suite: it runs only when named (`--scenes`).");
         for (const auto& p : scene->params.entries()) {
             std::string value;
             for (double v : p.value) value += fmt::format("{}{}", value.empty() ? "" : ", ", v);

@@ -12,16 +12,19 @@ public:
         command.add_option("DIRS", dirs_, "the shard directories, one per K")->required();
         command.add_option("--out", out_, "output directory")->required();
         command.add_flag("--overwrite", overwrite_, "replace results already in --out");
+        add_tolerance_option(command, tolerances_);
     }
     int run(const Invocation& how) override {
         const std::vector<std::filesystem::path> dirs(dirs_.begin(), dirs_.end());
+        parse_tolerances(tolerances_);
         const auto results = merge_shards(dirs);
-        write_outputs(OutputDir::open(out_, {"run", "results.csv", run_files, overwrite_}), results, how.command_line, how.out);
+        const OutputDir out = OutputDir::open(out_, {"run", "results.csv", run_files, overwrite_});
+        write_outputs(out, results, how.command_line, report_options(tolerances_, out.path()), how.out);
         return 0;
     }
 
 private:
-    std::vector<std::string> dirs_;
+    std::vector<std::string> dirs_, tolerances_;
     std::string out_;
     bool overwrite_ = false;
 };

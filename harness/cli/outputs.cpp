@@ -5,9 +5,12 @@
 #include "harness/engine/parallel.hpp"
 #include "harness/io/orders_csv.hpp"
 #include "harness/io/output_files.hpp"
+#include "harness/io/parse.hpp"
 #include "harness/io/results_csv.hpp"
+#include "harness/io/stability_csv.hpp"
 #include "reports/markdown_report.hpp"
 
+#include <algorithm>
 #include <fmt/format.h>
 
 namespace rotbench {
@@ -17,14 +20,37 @@ Executor all_cores() {
     return [](std::size_t count, const std::function<void(std::size_t)>& work) { parallel_for(count, core_count(), work); };
 }
 
+void add_tolerance_option(CLI::App& command, std::vector<std::string>& texts) {
+    command.add_option("--tolerance", texts, "relative angular-velocity error the report answers for (repeatable; default 1e-3 and 1e-6)");
+}
+
+std::vector<double> parse_tolerances(const std::vector<std::string>& texts) {
+    if (texts.empty()) return default_tolerances;
+    std::vector<double> out;
+    for (const auto& t : texts)
+        for (double v : parse_positive_list(t, "--tolerance")) {
+            if (!(v < 1.0)) throw InputError(fmt::format("--tolerance: {} is not below 1 (a relative error)", t));
+            if (std::find(out.begin(), out.end(), v) == out.end()) out.push_back(v);
+        }
+    std::sort(out.rbegin(), out.rend());  // loosest first
+    return out;
+}
+
+ReportOptions report_options(const std::vector<std::string>& tolerances, const fs::path& stability_dir) {
+    ReportOptions options;
+    options.tolerances = parse_tolerances(tolerances);
+    if (fs::exists(stability_dir / "stability.csv")) options.stability = read_stability(stability_dir);
+    return options;
+}
+
 void write_outputs(const OutputDir& dir, const std::vector<RunResult>& results, const std::string& command_line,
-                   std::ostream& out) {
+                   const ReportOptions& report, std::ostream& out) {
     dir.write("results.csv", results_csv(results));
     dir.write("runs.csv", runs_csv(results));
     const auto orders = observed_orders(results);
     dir.write("orders.csv", orders_csv(orders));
     dir.write("local_orders.csv", local_orders_csv(orders));
-    dir.write("report.md", markdown_report(describe(results), command_line, dir, all_cores()));
+    dir.write("report.md", markdown_report(describe(results), command_line, dir, report, all_cores()));
     out << fmt::format("wrote {} and {}\n", (dir.path() / "results.csv").string(), (dir.path() / "report.md").string());
 }
 

@@ -4,6 +4,9 @@
 #include "harness/engine/run.hpp"
 #include "harness/io/output_dir.hpp"
 #include "reports/executor.hpp"
+#include "reports/markdown_report.hpp"
+
+#include <CLI/CLI.hpp>
 
 #include <filesystem>
 #include <ostream>
@@ -16,13 +19,23 @@ namespace rotbench {
 inline constexpr int max_jobs = 1024, max_series_samples = 1000000;
 
 // The files `rotbench run` writes whose names are known before it starts.
-inline const std::vector<std::string> run_files = {"results.csv", "runs.csv", "orders.csv", "local_orders.csv", "report.md"};
+inline const std::vector<std::string> run_files = {"results.csv", "runs.csv", "orders.csv", "local_orders.csv", "answer.csv",
+                                                   "report.md"};
 
 // The report's plots drawn on every core.
 Executor all_cores();
 
-// results.csv, runs.csv, orders.csv, local_orders.csv and report.md.
-void write_outputs(const OutputDir& dir, const std::vector<RunResult>& results,
-                   const std::string& command_line, std::ostream& out);
+// --tolerance (repeatable): the report's tolerances on the relative angular-velocity error.
+void add_tolerance_option(CLI::App& command, std::vector<std::string>& texts);
+// Each in (0, 1) (InputError otherwise); the defaults when none is given.
+std::vector<double> parse_tolerances(const std::vector<std::string>& texts);
+
+// The report's options: the tolerances, and the stability study in `stability_dir` when it
+// holds a stability.csv.
+ReportOptions report_options(const std::vector<std::string>& tolerances, const std::filesystem::path& stability_dir);
+
+// results.csv, runs.csv, orders.csv, local_orders.csv, answer.csv and report.md.
+void write_outputs(const OutputDir& dir, const std::vector<RunResult>& results, const std::string& command_line,
+                   const ReportOptions& report, std::ostream& out);
 
 }  // namespace rotbench

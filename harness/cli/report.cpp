@@ -15,21 +15,27 @@ public:
         command.add_option("DIR", dir_, "a directory written by rotbench run")->required();
         command.add_option("--out", out_, "write report.md and its plots here instead (default: DIR)");
         command.add_flag("--overwrite", overwrite_, "write into an --out that holds files rotbench did not write (beside them)");
+        command.add_option("--stability", stability_, "the stability study to include (a directory rotbench stability wrote; default: DIR)");
+        add_tolerance_option(command, tolerances_);
     }
     int run(const Invocation& how) override {
+        const ReportOptions options = report_options(tolerances_, stability_.empty() ? dir_ : stability_);
+        if (!stability_.empty() && options.stability.empty())
+            throw InputError("--stability " + stability_ + ": no stability.csv there (rotbench stability --out writes one)");
         const ResultSet set = describe(read_results(dir_));
-        const OutputDir out = OutputDir::open(out_.empty() ? dir_ : out_, {"run", "", {"report.md"}, overwrite_});
+        const OutputDir out = OutputDir::open(out_.empty() ? dir_ : out_, {"run", "", {"report.md", "answer.csv"}, overwrite_});
         if (out_.empty() || std::filesystem::equivalent(out_, dir_)) {
         } else if (std::filesystem::exists(std::filesystem::path(dir_) / "cost.csv")) {  // the cost table goes with the report
             out.write("cost.csv", read_input_file(std::filesystem::path(dir_) / "cost.csv", "cannot read"));
         }
-        out.write("report.md", markdown_report(set, how.command_line, out, all_cores()));
+        out.write("report.md", markdown_report(set, how.command_line, out, options, all_cores()));
         how.out << "wrote " << (out.path() / "report.md").string() << "\n";
         return 0;
     }
 
 private:
-    std::string dir_, out_;
+    std::string dir_, out_, stability_;
+    std::vector<std::string> tolerances_;
     bool overwrite_ = false;
 };
 

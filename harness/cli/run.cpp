@@ -26,7 +26,7 @@ namespace {
 struct RunOptionsText {
     std::string scenes, schemes, dts, t_end, config, shard, resume, out = "rotbench-out";
     IsolationOptions isolation;
-    std::vector<std::string> settings;
+    std::vector<std::string> settings, tolerances;
     int energy_series = 200;
     int jobs = core_count();
     bool overwrite = false, quick = false;
@@ -60,6 +60,7 @@ void add_run_options(CLI::App& cmd, RunOptionsText& o) {
         ->capture_default_str()
         ->check(CLI::Range(1, max_jobs));
     o.isolation.add_to(cmd);
+    add_tolerance_option(cmd, o.tolerances);
     cmd.add_option("--energy-series", o.energy_series, "energy samples per run in scenes that plot it (0: none)")
         ->capture_default_str()
         ->check(CLI::Range(0, max_series_samples));
@@ -89,15 +90,17 @@ int resume(const CLI::App& run_cmd, const std::string& dir, std::ostream& out, s
 
 int run_sweep_command(const RunOptionsText& o, const Invocation& how) {
     const PlanSlice slice = slice_plan(plan_sweep(sweep_spec(o)), o.shard);  // every input checked before anything runs
+    parse_tolerances(o.tolerances);
     const OutputDir dir = OutputDir::open(how.resuming ? *how.resuming : fs::path(o.out),
                                           {"run", "results.csv", slice.shard ? slice_files : run_files, o.overwrite,
                                            how.resuming.has_value()});
+    const ReportOptions report = report_options(o.tolerances, dir.path());  // a stability study already in --out
     RunOptions options;
     options.series_samples = o.energy_series;
     o.isolation.apply(options);
     const SweepOutcome outcome = sweep_plan(slice, &dir, how, options, o.jobs, false);
     if (outcome.exit_status) return outcome.exit_status;
-    if (!slice.shard) write_outputs(dir, outcome.results, how.command_line, how.out);
+    if (!slice.shard) write_outputs(dir, outcome.results, how.command_line, report, how.out);
     else write_slice(dir, slice, outcome.results, how.out);  // no orders or report: they need every run
     discard_journal(dir);
     return 0;

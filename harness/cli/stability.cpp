@@ -1,5 +1,6 @@
 // `rotbench stability`: the measured stability limits, those of the eigenvalues of each
 // scheme's step map, and Peng et al.'s predictions, on the contact pairs and fast_spin.
+#include "harness/analysis/result_set.hpp"
 #include "harness/analysis/stability_study.hpp"
 #include "harness/cli/outputs.hpp"
 #include "harness/cli/verb.hpp"
@@ -37,9 +38,11 @@ public:
         const auto rows = stability_study(scenes, schemes, zetas, omegas, jobs_);
         dir.write("stability.csv", stability_csv(rows));
         dir.write("stability_spin.csv", stability_spin_csv(rows));
-        const std::string section = stability_section(rows, dir);
+        ResultSet families;  // the schemes' families, for the plots' panels
+        for (const auto& id : schemes) families.schemes[id] = scheme_info(id);
+        const std::string section = stability_section(rows, families, dir);
         dir.write("stability.md", "# rotbench stability\n\nCommand: `" + how.command_line + "`\n\n" + section +
-                                      spectral_radius_plots(spectral_radius_curves(scenes, schemes), dir));
+                                      spectral_radius_plots(spectral_radius_curves(scenes, schemes), families, dir));
         how.out << "wrote " << (dir.path() / "stability.csv").string() << " and " << (dir.path() / "stability.md").string() << "\n";
         return 0;
     }

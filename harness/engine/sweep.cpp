@@ -36,7 +36,10 @@ void check_reference_fits(const Scene& scene, double dt, std::int64_t steps) {
 std::vector<RunSpec> plan_sweep(const SweepSpec& spec) {
     const auto& scenes = SceneRegistry::instance();
     const auto& schemes = SchemeRegistry::instance();
-    const auto scene_ids = spec.scenes.empty() ? scenes.ids() : spec.scenes;
+    std::vector<std::string> scene_ids = spec.scenes;
+    if (scene_ids.empty())
+        for (const auto& id : scenes.ids())
+            if (make_scene(id)->in_default_suite()) scene_ids.push_back(id);
     const auto scheme_ids = spec.schemes.empty() ? schemes.ids() : spec.schemes;
     for (const auto& id : scheme_ids) schemes.at(id, "scheme");
     for (const auto& [scene_id, overrides] : spec.params) {

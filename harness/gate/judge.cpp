@@ -1,6 +1,7 @@
 // The verdicts of a gate: pure functions of the cases and the results of their runs. Every
 // bound is stated in the message with where it comes from.
 #include "harness/analysis/order_fit.hpp"
+#include "harness/analysis/round_off.hpp"
 #include "harness/gate/gate.hpp"
 
 #include <algorithm>
@@ -105,8 +106,7 @@ struct Worst {
     }
 };
 
-// Round-off only: every error at most ten units of round-off per step, accumulated over the
-// steps, times the size of the quantity (|w| of the reference for w, 1 rad for q).
+// Round-off only: every error within its round-off bound (harness/analysis/round_off.hpp).
 void judge_exact(Verdict& v, const Runs& runs) {
     if (const auto f = failed_run(runs); !f.empty()) {
         v.message = fmt::format("{} on {}: {}", v.of.id, v.of.scene, f);
@@ -114,9 +114,8 @@ void judge_exact(Verdict& v, const Runs& runs) {
     }
     Worst w;
     for (const RunResult* r : runs) {
-        const double n = r->value("steps");
-        w.add(r, r->value("omega_err_max"), n * 10.0 * eps * r->value("omega_ref_max"));
-        w.add(r, r->value("orientation_err_max"), n * 10.0 * eps);
+        w.add(r, r->value("omega_err_max"), round_off_bound(*r, "omega_err_max"));
+        w.add(r, r->value("orientation_err_max"), round_off_bound(*r, "orientation_err_max"));
     }
     v.measured = w.value, v.bound = w.bound, v.passed = w.ratio <= 1.0;
     v.message = fmt::format("{} on {}: error {} at dt = {} against the round-off bound {} (N = {} steps x 10 eps, times |w_ref| "
@@ -125,15 +124,14 @@ void judge_exact(Verdict& v, const Runs& runs) {
                             v.passed ? "round-off only" : "more than round-off");
 }
 
-// Angular momentum to round-off: each step may round L by a few units (4 eps), and measuring
-// it from q and w adds a few more (16 eps).
+// Angular momentum to round-off (harness/analysis/round_off.hpp).
 void judge_momentum(Verdict& v, const Runs& runs) {
     if (const auto f = failed_run(runs); !f.empty()) {
         v.message = fmt::format("{} on {}: {}", v.of.id, v.of.scene, f);
         return;
     }
     Worst w;
-    for (const RunResult* r : runs) w.add(r, r->value("momentum_drift_max"), (4.0 * r->value("steps") + 16.0) * eps);
+    for (const RunResult* r : runs) w.add(r, r->value("momentum_drift_max"), round_off_bound(*r, "momentum_drift_max"));
     v.measured = w.value, v.bound = w.bound, v.passed = w.ratio <= 1.0;
     v.message = fmt::format("{} on {}: momentum drift {} at dt = {}, bound (4 N + 16) eps = {} for N = {} steps: {}", v.of.id,
                             v.of.scene, g(w.value), g(w.run->spec.dt), g(w.bound), w.run->value("steps"),

@@ -7,13 +7,13 @@
 namespace rotbench {
 
 std::string orders_csv(const std::vector<OrderRow>& rows) {
-    std::string csv = "scene,scheme,metric,order,order_lo,order_hi,dt_min,dt_max,points\n";
+    std::string csv = "scene,scheme,metric,status,order,order_lo,order_hi,dt_min,dt_max,points\n";
     for (const auto& r : rows) {
         const auto& f = r.fit;
-        csv += fmt::format("{},{},{},{},{},{},{},{},{}\n", r.scene, r.scheme, r.metric,
-                           f.sufficient ? format_number(f.order) : "insufficient",
-                           f.sufficient ? format_number(f.order_lo) : "nan", f.sufficient ? format_number(f.order_hi) : "nan",
-                           format_number(f.dt_min), format_number(f.dt_max), f.points);
+        const bool fitted = r.status == OrderStatus::fit;
+        csv += fmt::format("{},{},{},{},{},{},{},{},{},{}\n", r.scene, r.scheme, r.metric, status_name(r.status),
+                           fitted ? format_number(f.order) : "", fitted ? format_number(f.order_lo) : "",
+                           fitted ? format_number(f.order_hi) : "", format_number(f.dt_min), format_number(f.dt_max), f.points);
     }
     return csv;
 }

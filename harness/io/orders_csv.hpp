@@ -8,8 +8,8 @@
 
 namespace rotbench {
 
-// Header scene,scheme,metric,order,order_lo,order_hi,dt_min,dt_max,points; an
-// insufficient fit has order "insufficient" and lo/hi "nan".
+// Header scene,scheme,metric,status,order,order_lo,order_hi,dt_min,dt_max,points; order,
+// order_lo and order_hi are numbers when status is "fit" and empty otherwise.
 std::string orders_csv(const std::vector<OrderRow>& rows);
 // Header scene,scheme,metric,dt_coarse,dt_fine,order.
 std::string local_orders_csv(const std::vector<OrderRow>& rows);

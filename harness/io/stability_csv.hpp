@@ -1,17 +1,23 @@
-// The stability study's CSV files.
+// The stability study's CSV files, written and read back (rotbench report merges them).
 #pragma once
 
 #include "harness/analysis/stability_study.hpp"
 
+#include <filesystem>
 #include <string>
 #include <vector>
 
 namespace rotbench {
 
-// stability.csv: scene,scheme,zeta,dt_empirical,dt_amplification,dt_peng, one row per contact
-// scene, scheme and zeta. The spin sweep, keyed by w_max (which that file has no column for),
-// goes to stability_spin.csv: scene,scheme,omega_max,dt_empirical,dt_peng.
+// stability.csv: scene,scheme,zeta,kind,dt_empirical,dt_amplification,dt_peng,dt_verlet_normal,
+// one row per contact scene, scheme and zeta. The spin sweep, keyed by w_max (which that file
+// has no column for), goes to stability_spin.csv: scene,scheme,omega_max,kind,dt_empirical,dt_peng.
+// `kind` is stability_kind(): sharp, weak or none.
 std::string stability_csv(const std::vector<StabilityRow>& rows);
 std::string stability_spin_csv(const std::vector<StabilityRow>& rows);
+
+// Both files of `dir` (stability_spin.csv may be absent), every field checked; InputError
+// naming the file and line otherwise.
+std::vector<StabilityRow> read_stability(const std::filesystem::path& dir);
 
 }  // namespace rotbench

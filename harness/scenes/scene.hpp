@@ -60,6 +60,8 @@ public:
     // The torque seen in the body frame changes with the orientation (dipole_top): the
     // class of scenes where reports/expected_orders.hpp's "with torque" orders apply.
     virtual bool torque_depends_on_orientation() const { return false; }
+    // In `rotbench run`'s default selection (false: a scene run only when named).
+    virtual bool in_default_suite() const { return true; }
 };
 
 using SceneRegistry = Registry<Scene>;

@@ -1,0 +1,152 @@
+#include "harness/analysis/advice.hpp"
+
+#include "harness/analysis/order_fit.hpp"
+#include "harness/analysis/stability.hpp"
+#include "harness/analysis/stability_study.hpp"
+#include "harness/engine/parallel.hpp"
+#include "harness/engine/run.hpp"
+#include "harness/scenes/stability_probe.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+
+namespace rotbench {
+namespace {
+
+const std::string scene_id = "particle_contact";
+
+double relative_error(const RunResult& r) { return r.value("omega_err_max") / r.value("omega_ref_max"); }
+
+bool stable(const RunResult& r) { return r.failure.empty() && r.value("unstable") == 0.0 && std::isfinite(relative_error(r)); }
+
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v.empty() ? NAN : v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
+}
+
+struct Outcome {
+    bool recommended = false;
+    Recommendation r;
+    std::string why;
+};
+
+Outcome advise_one(const Scene& scene, const ParamOverrides& params, double t_end, double tolerance, const std::string& scheme,
+                   bool verify) {
+    const auto& probe = dynamic_cast<const StabilityProbe&>(scene);
+    Outcome o;
+    o.r.scheme = scheme;
+    const StabilityCriterion criterion{stability_horizon_periods * probe.period(), stability_growth};
+    const double limit = empirical_limit(scene, scheme, probe.predicted_limit(), criterion);
+    o.r.dt_stability = limit;
+    if (!(limit > 0)) return {false, o.r, "no stable dt found"};
+    const double dt0 = advice_safety * (std::isfinite(limit) ? limit : probe.predicted_limit());
+
+    const auto run_at = [&](double dt, bool timed) {
+        RunSpec spec{scene_id, scheme, dt, t_end, params};
+        spec.timed = timed;
+        return run_one(spec);
+    };
+    std::vector<RunResult> ladder;
+    std::vector<OrderPoint> points;
+    std::vector<double> ns;
+    for (int k = 0; k < advice_ladder_rungs; ++k) {
+        ladder.push_back(run_at(dt0 / std::pow(2.0, k), true));
+        const RunResult& r = ladder.back();
+        if (stable(r) && relative_error(r) < advice_asymptotic_error) points.push_back({r.spec.dt, relative_error(r)});
+        if (std::isfinite(r.value("ns_per_step"))) ns.push_back(r.value("ns_per_step"));
+    }
+    if (!stable(ladder.front()))  // the search's horizon is the criterion's; a run may still fail
+        return {false, o.r, fmt::format("unstable at {:.3g} s below its measured limit {:.3g} s", dt0, limit)};
+    // No rung meets the tolerance: extrapolate from the finest with the observed order, run
+    // there, and again from that run, until a measured rung meets it; the dt is then always
+    // interpolated between two measured rungs, never taken on trust from an extrapolation.
+    const auto meets = [&](const RunResult& r) { return stable(r) && relative_error(r) <= tolerance; };
+    std::string extrapolated;
+    for (int search = 0; search < advice_searches && std::none_of(ladder.begin(), ladder.end(), meets); ++search) {
+        const OrderFit fit = fit_order(points);
+        const RunResult& finest = ladder.back();
+        if (!stable(finest) || !fit.sufficient || fit.order < 0.5)
+            return {false, o.r, fmt::format("does not reach {:g} on the ladder down to {:.3g} s, and its error has no order to "
+                                            "extrapolate with", tolerance, finest.spec.dt)};
+        const double next = finest.spec.dt * std::pow(advice_error_margin * tolerance / relative_error(finest), 1.0 / fit.order);
+        if (t_end / next > advice_max_steps)
+            return {false, o.r, fmt::format("needs dt = {:.3g} s, {:.3g} steps over {:g} s", next, t_end / next, t_end)};
+        extrapolated = fmt::format(" (after extrapolating with order {:.2f})", fit.order);
+        ladder.push_back(run_at(next, true));
+        const RunResult& r = ladder.back();
+        if (stable(r) && relative_error(r) < advice_asymptotic_error) points.push_back({r.spec.dt, relative_error(r)});
+        if (std::isfinite(r.value("ns_per_step"))) ns.push_back(r.value("ns_per_step"));
+    }
+    double dt = NAN;
+    for (std::size_t k = 0; k < ladder.size() && std::isnan(dt); ++k) {
+        if (!meets(ladder[k])) continue;
+        if (k == 0) {
+            dt = dt0, o.r.predicted_error = relative_error(ladder[0]), o.r.how = "stability-bound";
+        } else if (const RunResult &c = ladder[k - 1], &f = ladder[k]; !stable(c)) {
+            dt = f.spec.dt, o.r.predicted_error = relative_error(f), o.r.how = "measured";
+        } else {
+            const double target = std::max(advice_error_margin * tolerance, relative_error(f));
+            const double lc = std::log(relative_error(c)), lf = std::log(relative_error(f));
+            const double w = (std::log(target) - lf) / (lc - lf);
+            dt = std::exp(std::log(f.spec.dt) + w * (std::log(c.spec.dt) - std::log(f.spec.dt)));
+            o.r.predicted_error = target, o.r.how = "interpolated" + extrapolated;
+        }
+    }
+    if (std::isnan(dt))
+        return {false, o.r, fmt::format("does not reach {:g} down to {:.3g} s", tolerance, ladder.back().spec.dt)};
+    if (t_end / dt > advice_max_steps)
+        return {false, o.r, fmt::format("needs dt = {:.3g} s, {:.3g} steps over {:g} s", dt, t_end / dt, t_end)};
+    o.r.dt = dt;
+    o.r.ns_per_step = median(ns);
+    o.r.cpu_seconds = o.r.ns_per_step * 1e-9 / dt;
+    if (verify) {
+        const RunResult v = run_at(dt, false);
+        o.r.verified = true;
+        o.r.verified_stable = stable(v);
+        o.r.verified_error = o.r.verified_stable ? relative_error(v) : NAN;
+    }
+    o.recommended = true;
+    return o;
+}
+
+}  // namespace
+
+ParamOverrides particle_params(const Particle& p) {
+    ParamOverrides params = {{"inertia", {p.inertia.x(), p.inertia.y(), p.inertia.z()}},
+                             {"mass", {p.mass}},
+                             {"stiffness", {p.stiffness}},
+                             {"zeta", {p.zeta}},
+                             {"omega", {p.omega}}};
+    make_scene(scene_id, params);  // every value checked, named on error
+    return params;
+}
+
+Advice advise(const Particle& particle, double tolerance, const std::vector<std::string>& schemes, bool verify, int jobs) {
+    Advice a{particle, tolerance, particle.t_end, 0, 0, particle_params(particle), {}, {}};
+    const auto probe_scene = make_scene(scene_id, a.params);
+    const auto& probe = dynamic_cast<const StabilityProbe&>(*probe_scene);
+    a.period = probe.period();
+    a.dt_peng = probe.predicted_limit();
+    if (a.t_end == 0) a.t_end = advice_default_periods * a.period;
+    ParamOverrides with_t_end = a.params;
+    with_t_end.push_back({"t_end", {a.t_end}});
+    const auto scene = make_scene(scene_id, with_t_end);
+
+    std::vector<std::string> sound;
+    for (const auto& s : schemes) {
+        if (SchemeRegistry::instance().at(s, "scheme").extra.sound) sound.push_back(s);
+        else a.not_recommended.push_back({s, "a control (sound = false): never recommended"});
+    }
+    std::vector<Outcome> outcomes(sound.size());
+    parallel_for(sound.size(), jobs, [&](std::size_t i) { outcomes[i] = advise_one(*scene, a.params, a.t_end, tolerance, sound[i], verify); });
+    for (const auto& o : outcomes) {
+        if (o.recommended) a.recommendations.push_back(o.r);
+        else a.not_recommended.push_back({o.r.scheme, o.why});
+    }
+    std::stable_sort(a.recommendations.begin(), a.recommendations.end(),
+                     [](const Recommendation& x, const Recommendation& y) { return x.cpu_seconds < y.cpu_seconds; });
+    return a;
+}
+
+}  // namespace rotbench

@@ -1,0 +1,189 @@
+#include "reports/answer.hpp"
+
+#include "harness/io/csv.hpp"
+#include "harness/io/output_files.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+#include <map>
+
+namespace rotbench {
+namespace {
+
+const RunResult* coarsest(const std::vector<const RunResult*>& sorted) { return sorted.front(); }
+
+// A run's CPU time scaled to a run of the same duration at `dt`.
+double seconds_at(const RunResult& r, double dt) { return r.value("ns_per_step") * 1e-9 * (r.value("steps") * r.spec.dt) / dt; }
+
+std::vector<std::string> ranking_scenes(const std::vector<LargestDt>& answers) {
+    std::vector<std::string> found;
+    for (const auto& a : answers)
+        if (std::find(found.begin(), found.end(), a.scene) == found.end()) found.push_back(a.scene);
+    std::vector<std::string> chosen;
+    for (const char* preferred : {"asymmetric_free", "dipole_top"})  // a free top, and a torque T(q)
+        if (std::find(found.begin(), found.end(), preferred) != found.end()) chosen.push_back(preferred);
+    for (const auto& s : found)
+        if (chosen.size() < 2 && std::find(chosen.begin(), chosen.end(), s) == chosen.end()) chosen.push_back(s);
+    return chosen;
+}
+
+std::string dt_cell(const LargestDt& a) {
+    if (a.how == "never") return "never";
+    if (a.how == "exact") return fmt::format("exact (≥ {:.3g})", a.dt);
+    if (a.how == "at most") return fmt::format("≥ {:.3g}", a.dt);
+    if (a.how == "extrapolated") return fmt::format("{:.3g} (extrap.)", a.dt);
+    return fmt::format("{:.3g}", a.dt);
+}
+std::string cpu_cell(const LargestDt& a) { return std::isfinite(a.cpu_seconds) ? fmt::format("{:.2e}", a.cpu_seconds) : "—"; }
+bool below(const LargestDt& a) { return a.how != "never" && a.dt < a.dt_limit; }
+std::string limit_cell(const LargestDt& a) {
+    if (a.how == "never") return "—";
+    if (std::isnan(a.dt_limit)) return "unknown";
+    if (std::isinf(a.dt_limit)) return "yes (no limit found)";
+    return below(a) ? fmt::format("yes ({:.3g})", a.dt_limit) : fmt::format("**no** ({:.3g})", a.dt_limit);
+}
+
+}  // namespace
+
+double relative_omega_error(const RunResult& r) { return r.value("omega_err_max") / r.value("omega_ref_max"); }
+
+LargestDt largest_dt(const std::vector<const RunResult*>& runs, const OrderRow& order, double tolerance) {
+    LargestDt a{order.scene, order.scheme, tolerance, "never", NAN, NAN, NAN, ""};
+    std::vector<const RunResult*> ok;
+    for (const RunResult* r : runs)
+        if (r->failure.empty() && std::isfinite(relative_omega_error(*r)) && std::isfinite(r->value("ns_per_step"))) ok.push_back(r);
+    if (ok.empty()) return a;
+    std::sort(ok.begin(), ok.end(), [](const RunResult* x, const RunResult* y) { return x->spec.dt > y->spec.dt; });
+    const auto set = [&](const char* how, const RunResult& r, double dt) {
+        a.how = how, a.dt = dt, a.cpu_seconds = seconds_at(r, dt);
+        return a;
+    };
+    if (order.status == OrderStatus::exact) return set("exact", *coarsest(ok), coarsest(ok)->spec.dt);
+    for (std::size_t i = 0; i < ok.size(); ++i) {
+        if (!(relative_omega_error(*ok[i]) <= tolerance)) continue;
+        if (i == 0) return set("at most", *ok[0], ok[0]->spec.dt);
+        const RunResult &c = *ok[i - 1], &f = *ok[i];
+        const double lc = std::log(relative_omega_error(c)), lf = std::log(relative_omega_error(f));
+        const double w = (std::log(tolerance) - lf) / (lc - lf);  // 0 at f, 1 at c
+        return set("interpolated", f, std::exp(std::log(f.spec.dt) + w * (std::log(c.spec.dt) - std::log(f.spec.dt))));
+    }
+    if (order.status != OrderStatus::fit || order.fit.order <= 0.1) return a;
+    const RunResult& finest = *ok.back();
+    return set("extrapolated", finest, finest.spec.dt * std::pow(tolerance / relative_omega_error(finest), 1.0 / order.fit.order));
+}
+
+std::vector<LargestDt> largest_dts(const ResultSet& set, const std::vector<OrderRow>& orders, const std::vector<double>& tolerances,
+                                   const std::vector<StabilityRow>& stability) {
+    std::vector<LargestDt> out;
+    for (const double tolerance : tolerances)
+        for (const auto& o : orders) {
+            if (o.metric != "omega_err_max") continue;
+            std::vector<const RunResult*> runs;
+            double omega_ref = 0;
+            for (const auto& r : set.runs)
+                if (r.spec.scene == o.scene && r.spec.scheme == o.scheme) {
+                    runs.push_back(&r);
+                    if (r.has("omega_ref_max")) omega_ref = std::max(omega_ref, r.value("omega_ref_max"));
+                }
+            if (omega_ref <= 0) continue;
+            LargestDt a = largest_dt(runs, o, tolerance);
+            const SceneInfo& scene = set.scene(o.scene);
+            for (const auto& s : stability)  // the scene's own limit, at its damping ratio
+                if (scene.stability_scene && s.scene == o.scene && s.scheme == o.scheme && s.omega_max == 0 && s.zeta == scene.zeta)
+                    a.dt_limit = s.dt_empirical, a.limit_from = fmt::format("stability study, zeta = {:g}", s.zeta);
+            if (a.limit_from.empty()) {  // a spin limit: the least dt x w_max measured on fast_spin, over this scene's |w|
+                double least = NAN;
+                for (const auto& s : stability)
+                    if (s.scheme == o.scheme && s.omega_max > 0 && !(s.dt_empirical * s.omega_max >= least))
+                        least = s.dt_empirical * s.omega_max;
+                if (!std::isnan(least))
+                    a.dt_limit = least / omega_ref, a.limit_from = fmt::format("fast_spin: dt w_max = {:.3g}, over |w| = {:.3g} rad/s", least, omega_ref);
+            }
+            out.push_back(a);
+        }
+    return out;
+}
+
+std::string answer_csv(const std::vector<LargestDt>& answers) {
+    std::string csv = "tolerance,scene,scheme,how,dt,cpu_seconds,dt_limit,limit_from\n";
+    for (const auto& a : answers)
+        csv += csv_record({format_number(a.tolerance), a.scene, a.scheme, a.how, format_number(a.dt), format_number(a.cpu_seconds),
+                           format_number(a.dt_limit), a.limit_from});
+    return csv;
+}
+
+std::string answer_section(const ResultSet& set, const std::vector<LargestDt>& answers, const std::vector<double>& tolerances) {
+    if (answers.empty()) return "";
+    const auto scenes = ranking_scenes(answers);
+    std::string md = fmt::format(
+        "## The answer: the largest dt for a tolerance\n\n"
+        "For a tolerance on the relative angular-velocity error (`omega_err_max` / `omega_ref_max`, the largest error "
+        "over the run against the largest |w|), the largest dt at which each scheme meets it, and the CPU time a whole run "
+        "at that dt takes (the scheme's `ns_per_step` on that scene times the steps). The dt is interpolated (log-log) "
+        "between the two measured steps around the tolerance; \"≥\": the coarsest step measured already meets it; "
+        "\"extrap.\": no measured step does, and the finest one is extended with the observed order; \"exact\": round-off "
+        "only at every step, so only stability limits dt; \"never\": no step meets it and the error does not converge. "
+        "*Stable*: whether that dt lies below the measured stability limit (section [Stability](#stability-limits); "
+        "\"unknown\" without a stability study). Ranked by the geometric mean of the CPU times on {}; all scenes and "
+        "`answer.csv` follow.\n\n",
+        fmt::format("`{}`", fmt::join(scenes, "` and `")));
+    for (const double tol : tolerances) {
+        struct Row {
+            std::string scheme;
+            std::vector<const LargestDt*> cells;
+            double score = 0;
+        };
+        std::vector<Row> rows;
+        for (const auto& a : answers) {
+            if (a.tolerance != tol || std::find(scenes.begin(), scenes.end(), a.scene) == scenes.end()) continue;
+            auto it = std::find_if(rows.begin(), rows.end(), [&](const Row& r) { return r.scheme == a.scheme; });
+            if (it == rows.end()) it = rows.insert(rows.end(), Row{a.scheme, std::vector<const LargestDt*>(scenes.size()), 0});
+            it->cells[std::find(scenes.begin(), scenes.end(), a.scene) - scenes.begin()] = &a;
+        }
+        for (auto& row : rows) {
+            double log_sum = 0;
+            for (const LargestDt* c : row.cells) log_sum += c && std::isfinite(c->cpu_seconds) ? std::log(c->cpu_seconds) : INFINITY;
+            row.score = std::exp(log_sum / static_cast<double>(scenes.size()));
+        }
+        std::stable_sort(rows.begin(), rows.end(), [](const Row& a, const Row& b) { return a.score < b.score; });
+        md += fmt::format("### Relative error {:g}\n\n| rank | scheme |", tol);
+        for (const auto& s : scenes) md += fmt::format(" {}: dt (s) | CPU (s) |", s);
+        md += " stable |\n|---:|---|";
+        for (std::size_t i = 0; i < scenes.size(); ++i) md += "---:|---:|";
+        md += "---|\n";
+        int rank = 0;
+        for (const auto& row : rows) {
+            const SchemeInfo* info = set.scheme(row.scheme);
+            md += fmt::format("| {} | `{}`{} |", ++rank, row.scheme, info && !info->claims.sound ? " (control)" : "");
+            std::string stable = "yes";
+            for (std::size_t i = 0; i < scenes.size(); ++i) {
+                const LargestDt* c = row.cells[i];
+                md += c ? fmt::format(" {} | {} |", dt_cell(*c), cpu_cell(*c)) : " — | — |";
+                if (!c || c->how == "never") continue;
+                if (std::isnan(c->dt_limit)) { if (stable == "yes") stable = "unknown"; }
+                else if (!below(*c)) stable = fmt::format("**no** on {}", scenes[i]);
+            }
+            md += " " + stable + " |\n";
+        }
+        md += "\n";
+    }
+    md += "<details><summary>Every scene</summary>\n\n";
+    for (const double tol : tolerances) {
+        std::vector<std::string> all;
+        for (const auto& a : answers)
+            if (a.tolerance == tol && std::find(all.begin(), all.end(), a.scene) == all.end()) all.push_back(a.scene);
+        for (const auto& scene : all) {
+            md += fmt::format("#### `{}`, relative error {:g}\n\n| scheme | dt (s) | CPU (s) | stable (limit, s) | limit from |\n"
+                              "|---|---:|---:|---|---|\n", scene, tol);
+            for (const auto& a : answers)
+                if (a.tolerance == tol && a.scene == scene)
+                    md += fmt::format("| {} | {} | {} | {} | {} |\n", a.scheme, dt_cell(a), cpu_cell(a), limit_cell(a),
+                                      a.limit_from.empty() ? "—" : a.limit_from);
+            md += "\n";
+        }
+    }
+    return md + "</details>\n\n";
+}
+
+}  // namespace rotbench

@@ -1,0 +1,45 @@
+// Plots that stay readable with any number of schemes: the schemes are grouped by family
+// (the seed's, kick-drift-kick, the others) into panels of at most 8 series, 8 being what
+// colours and point types keep apart, drawn on a grid of panels of one size.
+#pragma once
+
+#include "harness/analysis/result_set.hpp"
+
+#include <cstddef>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace rotbench {
+
+inline constexpr std::size_t max_series_per_panel = 8;
+
+struct Panel {
+    std::string title;
+    std::vector<std::string> schemes;
+};
+
+// The family a scheme is drawn with: "seed schemes", "kick-drift-kick" or "others" (controls,
+// sound = false, and plug-ins that name no family go with the others).
+std::string family_title(const ResultSet& set, const std::string& scheme);
+
+// The schemes' families in that order, each cut into panels of at most 8; then, when `best`
+// names more than one scheme (one per family), an overview panel of them.
+std::vector<Panel> family_panels(const ResultSet& set, const std::vector<std::string>& schemes,
+                                 const std::vector<std::string>& best = {});
+
+// The best of each family among `schemes`: the least `score` (NaN and controls never best).
+std::vector<std::string> best_of_families(const ResultSet& set, const std::vector<std::string>& schemes,
+                                          const std::function<double(const std::string&)>& score);
+
+// A gnuplot multiplot of `panels` on a grid of two columns: every panel gets the same plot
+// area (screen margins fixed, the key in a strip to its right), so no key squashes a panel.
+// `setup` is the script's common head (terminal line excluded); `plot(i)` the commands of panel i
+// (its `plot` line, after the title is set).
+std::string panel_grid_script(const std::string& output_line, const std::string& title, const std::string& setup,
+                              const std::vector<Panel>& panels, const std::function<std::string(std::size_t)>& plot);
+
+// The gnuplot style of the i-th series of a panel (colour and point type), distinct for i < 8.
+std::string series_style(std::size_t i);
+
+}  // namespace rotbench

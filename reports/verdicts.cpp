@@ -1,0 +1,185 @@
+#include "reports/verdicts.hpp"
+
+#include "harness/analysis/round_off.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+#include <map>
+
+namespace rotbench {
+namespace {
+
+std::vector<std::string> schemes_of(const ResultSet& set) {
+    std::vector<std::string> out;
+    for (const auto& r : set.runs)
+        if (std::find(out.begin(), out.end(), r.spec.scheme) == out.end()) out.push_back(r.spec.scheme);
+    return out;
+}
+
+// Scenes with a reference, torque-free (with_torque false) or under a torque T(q) (true).
+bool judged_scene(const SceneInfo& s, bool with_torque) {
+    if (s.reference == Scene::ReferenceKind::none) return false;
+    return with_torque ? s.torque_depends_on_orientation : s.conserves_angular_momentum;
+}
+
+std::string range(double lo, double hi) {
+    return std::abs(hi - lo) < 0.005 ? fmt::format("{:.2f}", lo) : fmt::format("{:.2f}–{:.2f}", lo, hi);
+}
+
+// "claimed → observed" for the angular-velocity error's order over the judged scenes.
+std::string order_cell(const ResultSet& set, const std::vector<OrderRow>& orders, const std::string& scheme, bool with_torque) {
+    const SchemeInfo* info = set.scheme(scheme);
+    std::string claimed = "—";
+    if (info) {
+        const int order = with_torque ? info->claims.with_torque.order : info->claims.without_torque.order;
+        if (!with_torque && info->claims.exact_without_torque) claimed = "exact";
+        else if (order > 0) claimed = std::to_string(order);
+    }
+    double lo = INFINITY, hi = -INFINITY;
+    std::map<OrderStatus, int> count;
+    for (const auto& o : orders) {
+        if (o.scheme != scheme || o.metric != "omega_err_max" || !judged_scene(set.scene(o.scene), with_torque)) continue;
+        ++count[o.status];
+        if (o.status == OrderStatus::fit) lo = std::min(lo, o.fit.order), hi = std::max(hi, o.fit.order);
+    }
+    if (count.empty()) return "—";
+    std::string observed;
+    const auto add = [&](const std::string& part) { observed += (observed.empty() ? "" : "; ") + part; };
+    if (count[OrderStatus::fit]) add(range(lo, hi));
+    const int scenes = count[OrderStatus::fit] + count[OrderStatus::exact] + count[OrderStatus::insufficient] +
+                       count[OrderStatus::no_convergence];
+    if (int n = count[OrderStatus::exact]) add(n == scenes ? "exact" : fmt::format("{} exact", n));
+    if (int n = count[OrderStatus::no_convergence]) add(n == scenes ? "no convergence" : fmt::format("{} no convergence", n));
+    if (int n = count[OrderStatus::insufficient]) add(n == scenes ? "insufficient" : fmt::format("{} insufficient", n));
+    return claimed + " → " + observed;
+}
+
+std::vector<const RunResult*> torque_free_runs(const ResultSet& set, const std::string& scheme) {
+    std::vector<const RunResult*> out;
+    for (const auto& r : set.runs)
+        if (r.spec.scheme == scheme && r.failure.empty() && judged_scene(set.scene(r.spec.scene), false)) out.push_back(&r);
+    return out;
+}
+
+std::string momentum_cell(const ResultSet& set, const std::string& scheme) {
+    double worst = 0;
+    bool kept = true, any = false;
+    for (const RunResult* r : torque_free_runs(set, scheme)) {
+        const double v = r->value("momentum_drift_max");
+        if (!std::isfinite(v)) continue;
+        any = true;
+        worst = std::max(worst, v);
+        kept = kept && v <= round_off_bound(*r, "momentum_drift_max");
+    }
+    if (!any) return "—";
+    return kept ? "kept" : fmt::format("not kept (≤ {:.1e})", worst);
+}
+
+// Per torque-free scene that conserves energy, its coarsest stable run with a series.
+std::string energy_cell(const ResultSet& set, const std::string& scheme) {
+    std::map<std::string, std::vector<const RunResult*>> by_scene;
+    for (const RunResult* r : torque_free_runs(set, scheme))
+        if (set.scene(r->spec.scene).conserves_energy && std::isfinite(r->value("energy_drift_max"))) by_scene[r->spec.scene].push_back(r);
+    if (by_scene.empty()) return "—";
+    bool kept = true, drifting = false, judged = false;
+    double worst_rate = 0, worst_bounded = 0;
+    for (const auto& [scene, runs] : by_scene) {
+        const bool scene_kept = std::all_of(runs.begin(), runs.end(), [](const RunResult* r) {
+            return r->value("energy_drift_max") <= round_off_bound(*r, "energy_drift_max");
+        });
+        if (scene_kept) continue;
+        kept = false;
+        const RunResult* coarse = nullptr;
+        for (const RunResult* r : runs)
+            if (!r->series.empty() && (!coarse || r->spec.dt > coarse->spec.dt)) coarse = r;
+        if (!coarse) continue;
+        judged = true;
+        if (energy_growth(*coarse) >= std::sqrt(2.0)) {
+            drifting = true;
+            worst_rate = std::max(worst_rate, std::abs(coarse->value("energy_drift_rate")));
+        } else {
+            worst_bounded = std::max(worst_bounded, coarse->value("energy_drift_max"));
+        }
+    }
+    if (kept) return "kept";
+    if (!judged) return "—";
+    return drifting ? fmt::format("drifting ({:.1e} /s)", worst_rate) : fmt::format("bounded (≤ {:.1e})", worst_bounded);
+}
+
+std::string stability_cell(const std::vector<StabilityRow>& stability, const std::string& scheme) {
+    double lo = INFINITY, hi = 0;
+    std::string weak;
+    for (const auto& s : stability) {
+        if (s.scheme != scheme || s.omega_max != 0) continue;
+        const double ratio = s.dt_empirical / s.dt_peng;
+        lo = std::min(lo, ratio), hi = std::max(hi, ratio);
+        if (stability_kind(s) == "weak") weak += fmt::format("{}{} ζ = {:g}", weak.empty() ? "" : ", ", s.scene, s.zeta);
+    }
+    if (!(hi > 0)) return "—";
+    const std::string r = hi - lo < 0.005 ? fmt::format("{:.2f}", lo) : fmt::format("{:.3g}–{:.3g}", lo, hi);
+    return weak.empty() ? r : r + " (weak: " + weak + ")";
+}
+
+double median(std::vector<double> v) {
+    if (v.empty()) return NAN;
+    std::sort(v.begin(), v.end());
+    return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
+}
+
+}  // namespace
+
+std::string cost_scene(const ResultSet& set) {
+    if (set.scenes.count("asymmetric_free")) return "asymmetric_free";
+    for (const auto& r : set.runs)
+        if (set.scene(r.spec.scene).bodies == 1) return r.spec.scene;
+    return set.runs.empty() ? "" : set.runs.front().spec.scene;
+}
+
+double energy_growth(const RunResult& r) {
+    if (r.series.size() < 4) return NAN;
+    const double half = 0.5 * r.series.back().at(0);
+    double first = 0, second = 0;
+    for (const auto& row : r.series) {
+        double& largest = row.at(0) <= half ? first : second;
+        largest = std::max(largest, std::abs(row.at(1)));
+    }
+    return first > 0 ? second / first : NAN;
+}
+
+std::string verdict_section(const ResultSet& set, const std::vector<OrderRow>& orders, const std::vector<StabilityRow>& stability) {
+    const std::string cost_on = cost_scene(set);
+    std::string md = fmt::format(
+        "## Verdicts\n\n"
+        "One row per scheme. *Order*: claimed → observed order of the angular-velocity error, over the torque-free scenes "
+        "with a reference (*free*) and those with an orientation-dependent torque (*torque*); a range spans the scenes, "
+        "\"exact\" is round-off only, and the other statuses are those of `orders.csv`. *Momentum*: the world angular "
+        "momentum on the torque-free scenes, \"kept\" to round-off ((4 N + 16) eps) or the largest relative drift. "
+        "*Energy*: \"kept\" to round-off (10 eps per step), else, on each torque-free scene at its coarsest step, "
+        "\"bounded\" when the largest error over the second half of the run is below sqrt 2 times that over the first "
+        "half, \"drifting\" (with the largest `energy_drift_rate`) when not. *Stability / Peng*: the measured stability "
+        "limit over Peng et al.'s prediction on the contact pairs, every damping ratio (below 1: Peng's dt is unsafe). "
+        "*ns / step*: **the cost figure of this report**, the median `ns_per_step` of the scheme's runs on `{}` (one "
+        "body; the per-thread CPU time of a run without its metrics over its steps); every CPU time in the report is "
+        "this kind of figure, on its own scene.\n\n"
+        "| scheme | order, free | order, torque | momentum | energy | stability / Peng | ns / step |\n"
+        "|---|---|---|---|---|---|---:|\n",
+        cost_on);
+    for (const auto& scheme : schemes_of(set)) {
+        const SchemeInfo* info = set.scheme(scheme);
+        std::vector<double> ns;
+        for (const auto& r : set.runs)
+            if (r.spec.scheme == scheme && r.spec.scene == cost_on && std::isfinite(r.value("ns_per_step"))) ns.push_back(r.value("ns_per_step"));
+        const double cost = median(ns);
+        md += fmt::format("| `{}`{} | {} | {} | {} | {} | {} | {} |\n", scheme, info && !info->claims.sound ? " (control)" : "",
+                          order_cell(set, orders, scheme, false), order_cell(set, orders, scheme, true), momentum_cell(set, scheme),
+                          energy_cell(set, scheme), stability_cell(stability, scheme),
+                          std::isfinite(cost) ? fmt::format("{:.0f}", cost) : "—");
+    }
+    if (stability.empty())
+        md += "\nNo stability study in this directory: `rotbench stability --out DIR` writes one beside the runs, and "
+              "`rotbench report DIR` then includes it.\n";
+    return md + "\n";
+}
+
+}  // namespace rotbench

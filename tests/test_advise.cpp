@@ -1,0 +1,110 @@
+// rotbench advise: its answers hold when checked, on the default scenes' particles and on two
+// others, and bad input is refused before any work.
+#include "cli_helpers.hpp"
+#include "harness/analysis/advice.hpp"
+
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <nlohmann/json.hpp>
+
+using namespace rotbench;
+using namespace rotbench::test;
+
+namespace {
+
+// The particles of the default contact scenes (seed 004's sphere and ellipsoid, k = 1e10 N/m),
+// a ballast grain (the ellipsoid of semi-axes 30, 20, 15 mm at 0.1 kg) and a damped rod-like
+// grain spinning fast.
+struct Case {
+    const char* name;
+    Particle particle;
+};
+Particle ellipsoid(double a, double b, double c, double density, double k, double zeta, double omega) {
+    const double m = density * 4.0 / 3.0 * M_PI * a * b * c;
+    return {Eigen::Vector3d(m / 5 * (b * b + c * c), m / 5 * (a * a + c * c), m / 5 * (a * a + b * b)), m, k, zeta, omega, 0};
+}
+const Case cases[] = {
+    {"sphere_pair's sphere", ellipsoid(0.5, 0.5, 0.5, 1000, 1e10, 0, 10)},
+    {"ellipsoid_pair's ellipsoid", ellipsoid(3, 2, 1, 1000, 1e10, 0, 10)},
+    {"ballast grain", {Eigen::Vector3d(1.25e-5, 2.25e-5, 2.6e-5), 0.1, 1e6, 0, 10, 0}},
+    {"damped fast rod", ellipsoid(4e-3, 1e-3, 1e-3, 2500, 1e4, 0.3, 500)},
+};
+
+}  // namespace
+
+TEST_CASE("advise: every recommended dt lies below its measured limit, and verified at that dt it meets the tolerance", "[study]") {
+    const std::vector<std::string> schemes = {"direct", "fincham", "no_squish", "munjiza_rk4", "zvw", "no_gyro"};
+    for (const auto& c : cases)
+        for (const double tolerance : {1e-3, 1e-5}) {
+            INFO(c.name << ", tolerance " << tolerance);
+            const Advice a = advise(c.particle, tolerance, schemes, true, 2);
+            CHECK(a.recommendations.size() >= 2);  // fincham and no_squish at least
+            for (const auto& r : a.recommendations) {
+                INFO(r.scheme << " at dt " << r.dt << " (" << r.how << "), limit " << r.dt_stability);
+                CHECK(r.scheme != "no_gyro");
+                CHECK(r.dt < r.dt_stability);
+                CHECK(r.verified);
+                CHECK(r.verified_stable);
+                CHECK(r.verified_error <= tolerance);
+            }
+            for (std::size_t i = 1; i < a.recommendations.size(); ++i)  // best first
+                CHECK(a.recommendations[i - 1].cpu_seconds <= a.recommendations[i].cpu_seconds);
+            CHECK(std::any_of(a.not_recommended.begin(), a.not_recommended.end(),
+                              [](const auto& n) { return n.first == "no_gyro"; }));
+        }
+}
+
+TEST_CASE("advise writes advice.json with the particle and its recommendations, best first") {
+    const auto dir = fresh_dir("advise_json");
+    const Cli r = cli({"advise", "--inertia", "1.25e-5,2.25e-5,2.6e-5", "--mass", "0.1", "--stiffness", "1e6", "--tolerance", "1e-3",
+                       "--schemes", "fincham,no_gyro", "--verify", "--out", dir.string()});
+    REQUIRE(r.status == 0);
+    CHECK_THAT(r.out, Catch::Contains("fincham"));
+    CHECK_THAT(r.out, Catch::Contains("not recommended: no_gyro: a control"));
+    const auto json = nlohmann::json::parse(read(dir / "advice.json"));
+    CHECK(json["particle"]["mass"] == 0.1);
+    CHECK(json["particle"]["inertia"].size() == 3);
+    REQUIRE(json["recommendations"].size() == 1);
+    const auto& rec = json["recommendations"][0];
+    CHECK(rec["scheme"] == "fincham");
+    for (const char* key : {"dt", "dt_stability", "predicted_error", "ns_per_step", "cpu_seconds", "verified_error"})
+        CHECK(rec[key].is_number());
+    CHECK(rec["verified_stable"] == true);
+    CHECK(rec["dt"].get<double>() < rec["dt_stability"].get<double>());
+    CHECK(json["not_recommended"][0]["scheme"] == "no_gyro");
+    fs::remove_all(dir);
+}
+
+TEST_CASE("advise refuses a particle that is not one, in one line with exit 2, before writing anything") {
+    const auto dir = fresh_dir("advise_bad");
+    const std::vector<std::string> good = {"--inertia", "1,1,1", "--mass", "1", "--stiffness", "1e6", "--tolerance", "1e-3"};
+    const std::vector<std::pair<std::vector<std::string>, std::string>> bad = {
+        {{"--inertia", "1,2"}, "three principal moments"},
+        {{"--inertia", "1,1,5"}, "triangle inequality"},
+        {{"--inertia", "1,-1,1"}, "--inertia"},
+        {{"--mass", "0"}, "--mass"},
+        {{"--stiffness", "nan"}, "--stiffness"},
+        {{"--tolerance", "2"}, "not below 1"},
+        {{"--tolerance", "0"}, "--tolerance"},
+        {{"--zeta", "-0.1"}, "--zeta"},
+        {{"--omega", "-5"}, "--omega"},
+        {{"--t-end", "-1"}, "--t-end"},
+        {{"--schemes", "nope"}, "unknown scheme 'nope'"},
+    };
+    for (const auto& [change, message] : bad) {
+        std::vector<std::string> args = {"advise", "--out", dir.string()};
+        for (std::size_t i = 0; i < good.size(); i += 2) {
+            const auto it = std::find(change.begin(), change.end(), good[i]);
+            args.push_back(good[i]);
+            args.push_back(it == change.end() ? good[i + 1] : *(it + 1));
+        }
+        for (std::size_t i = 0; i < change.size(); i += 2)
+            if (std::find(good.begin(), good.end(), change[i]) == good.end()) args.insert(args.end(), {change[i], change[i + 1]});
+        const Cli r = cli(args);
+        INFO(join(args, " ") << " -> " << r.err);
+        CHECK(r.status == 2);
+        CHECK(one_line(r.err));
+        CHECK_THAT(r.err, Catch::Contains(message));
+        CHECK_FALSE(fs::exists(dir));
+    }
+}
