@@ -156,11 +156,12 @@ std::string answer_section(const ResultSet& set, const std::vector<LargestDt>& a
         for (const auto& row : rows) {
             const SchemeInfo* info = set.scheme(row.scheme);
             md += fmt::format("| {} | `{}`{} |", ++rank, row.scheme, info && !info->claims.sound ? " (control)" : "");
-            std::string stable = "yes";
+            std::string stable = "—";  // stays so when no scene has a dt to judge
             for (std::size_t i = 0; i < scenes.size(); ++i) {
                 const LargestDt* c = row.cells[i];
                 md += c ? fmt::format(" {} | {} |", dt_cell(*c), cpu_cell(*c)) : " — | — |";
                 if (!c || c->how == "never") continue;
+                if (stable == "—") stable = "yes";
                 if (std::isnan(c->dt_limit)) { if (stable == "yes") stable = "unknown"; }
                 else if (!below(*c)) stable = fmt::format("**no** on {}", scenes[i]);
             }
