@@ -40,92 +40,91 @@ std::vector<std::string> lines(const std::string& text) {
 
 }  // namespace
 
-TEST_CASE("the report opens with a paragraph, the contents, the verdicts and the answer") {
-    const auto md = lines(read(report_dir() / "report.md"));
-    std::vector<std::string> headings;
-    for (const auto& l : md)
-        if (l.rfind("## ", 0) == 0) headings.push_back(l);
-    REQUIRE(headings.size() >= 4);
-    CHECK(headings[0] == "## Contents");
-    CHECK(headings[1] == "## Verdicts");
-    CHECK(headings[2] == "## The answer: the largest dt for a tolerance");
-    CHECK(headings[3] == "## Stability limits");
-    CHECK(md[2].find("runs of 5 schemes on 3 scenes") != std::string::npos);  // the one-paragraph header
-    const std::string text = read(report_dir() / "report.md");
-    CHECK_THAT(text, Catch::Contains("### Relative error 0.001"));
-    CHECK_THAT(text, Catch::Contains("### Relative error 1e-06"));
-    CHECK_THAT(text, Catch::Contains("| `no_gyro` (control) |"));
-    // The exact scheme reads "exact" where it is, in the verdicts and in the answer.
-    CHECK(std::regex_search(text, std::regex(R"(\| `exact_splitting` \| exact → exact \|)")));
-    CHECK(std::regex_search(text, std::regex(R"(\| `exact_splitting` \| exact \(≥ [0-9.e-]+\) \|)")));
-    // The stability study merged from the directory: sphere_pair's table, Peng's dt first.
-    CHECK_THAT(text, Catch::Contains("### `sphere_pair`\n\n| scheme | zeta = 0 | zeta = 0.3 |"));
-    CHECK_THAT(text, Catch::Contains("| *Peng's dt (s)* |"));
-}
-
-TEST_CASE("no table of the report has more than 7 columns") {
-    for (const auto& l : lines(read(report_dir() / "report.md"))) {
-        if (l.rfind("|---", 0) != 0) continue;  // a table's rule line
-        INFO(l);
-        CHECK(std::count(l.begin(), l.end(), '|') - 1 <= 7);
+// One test case, its parts as sections: the run they read is made once per process.
+TEST_CASE("the report of a quick run with its stability study") {
+    SECTION("the report opens with a paragraph, the contents, the verdicts and the answer") {
+        const auto md = lines(read(report_dir() / "report.md"));
+        std::vector<std::string> headings;
+        for (const auto& l : md)
+            if (l.rfind("## ", 0) == 0) headings.push_back(l);
+        REQUIRE(headings.size() >= 4);
+        CHECK(headings[0] == "## Contents");
+        CHECK(headings[1] == "## Verdicts");
+        CHECK(headings[2] == "## The answer: the largest dt for a tolerance");
+        CHECK(headings[3] == "## Stability limits");
+        CHECK(md[2].find("runs of 5 schemes on 3 scenes") != std::string::npos);  // the one-paragraph header
+        const std::string text = read(report_dir() / "report.md");
+        CHECK_THAT(text, Catch::Contains("### Relative error 0.001"));
+        CHECK_THAT(text, Catch::Contains("### Relative error 1e-06"));
+        CHECK_THAT(text, Catch::Contains("| `no_gyro` (control) |"));
+        // The exact scheme reads "exact" where it is, in the verdicts and in the answer.
+        CHECK(std::regex_search(text, std::regex(R"(\| `exact_splitting` \| exact → exact \|)")));
+        CHECK(std::regex_search(text, std::regex(R"(\| `exact_splitting` \| exact \(≥ [0-9.e-]+\) \|)")));
+        // The stability study merged from the directory: sphere_pair's table, Peng's dt first.
+        CHECK_THAT(text, Catch::Contains("### `sphere_pair`\n\n| scheme | zeta = 0 | zeta = 0.3 |"));
+        CHECK_THAT(text, Catch::Contains("| *Peng's dt (s)* |"));
     }
-}
-
-TEST_CASE("orders.csv says what each row is: fit with its order, or exact, insufficient, no_convergence without one") {
-    const auto rows = read_csv(report_dir() / "orders.csv", "scene,scheme,metric,status,order,order_lo,order_hi,dt_min,dt_max,points");
-    std::map<std::string, std::string> status;
-    for (const auto& r : rows) {
-        INFO(r[0] << " " << r[1] << " " << r[2]);
-        CHECK((r[3] == "fit" || r[3] == "exact" || r[3] == "insufficient" || r[3] == "no_convergence"));
-        CHECK(r[4].empty() == (r[3] != "fit"));
-        if (r[3] == "fit") CHECK(std::isfinite(csv_number(r[4], "order")));
-        if (r[2] == "omega_err_max") status[r[0] + "/" + r[1]] = r[3];
-    }
-    CHECK(status["asymmetric_free/exact_splitting"] == "exact");
-    CHECK(status["asymmetric_free/no_gyro"] == "no_convergence");
-    CHECK(status["asymmetric_free/fincham"] == "fit");
-}
-
-TEST_CASE("stability.csv carries each row's kind and reads back to the same file") {
-    const auto rows = read_stability(report_dir());
-    REQUIRE(rows.size() == 5 * 2 + 5);  // two damping ratios on sphere_pair, one spin rate on fast_spin
-    std::map<std::string, std::string> kind;
-    for (const auto& r : rows) kind[r.scene + "/" + r.scheme + "/" + std::to_string(r.zeta)] = stability_kind(r);
-    CHECK(kind["sphere_pair/fincham/0.000000"] == "sharp");
-    CHECK(kind["sphere_pair/zvw/0.000000"] == "weak");
-    CHECK(stability_csv(rows) == read(report_dir() / "stability.csv"));
-    CHECK(stability_spin_csv(rows) == read(report_dir() / "stability_spin.csv"));
-}
-
-TEST_CASE("the plots have units on their axes, at most 8 series per panel, and panels of one width") {
-    int scripts = 0;
-    for (const auto& entry : fs::directory_iterator(report_dir() / "plots")) {
-        if (entry.path().extension() != ".gp") continue;
-        ++scripts;
-        const std::string script = read(entry.path());
-        INFO(entry.path().filename().string());
-        std::set<std::string> widths;
-        double left = 0;
-        for (const auto& l : lines(script)) {
-            std::smatch m;
-            if (std::regex_search(l, m, std::regex(R"(set [xy]label '(.*)')"))) CHECK(std::regex_search(m[1].str(), std::regex(R"(\(.+\)$)")));
-            if (std::regex_search(l, m, std::regex(R"(set lmargin at screen ([0-9.]+))"))) left = std::stod(m[1]);
-            if (std::regex_search(l, m, std::regex(R"(set rmargin at screen ([0-9.]+))")))
-                widths.insert(fmt::format("{:.3f}", std::stod(m[1]) - left));
+    SECTION("no table of the report has more than 7 columns") {
+        for (const auto& l : lines(read(report_dir() / "report.md"))) {
+            if (l.rfind("|---", 0) != 0) continue;  // a table's rule line
+            INFO(l);
+            CHECK(std::count(l.begin(), l.end(), '|') - 1 <= 7);
         }
-        CHECK(widths.size() <= 1);
-        // Each plot command, continued over "\" lines, names at most 8 series.
-        std::string command;
-        for (const auto& l : lines(script)) {
-            if (l.rfind("plot ", 0) == 0) command = l;
-            else if (!command.empty()) command += l;
-            if (!command.empty() && (l.empty() || l.back() != '\\')) {
-                std::size_t titles = 0;
-                for (std::size_t at = command.find(" title '"); at != std::string::npos; at = command.find(" title '", at + 1)) ++titles;
-                CHECK(titles <= 8);
-                command.clear();
+    }
+    SECTION("orders.csv says what each row is: fit with its order, or exact, insufficient, no_convergence without one") {
+        const auto rows = read_csv(report_dir() / "orders.csv", "scene,scheme,metric,status,order,order_lo,order_hi,dt_min,dt_max,points");
+        std::map<std::string, std::string> status;
+        for (const auto& r : rows) {
+            INFO(r[0] << " " << r[1] << " " << r[2]);
+            CHECK((r[3] == "fit" || r[3] == "exact" || r[3] == "insufficient" || r[3] == "no_convergence"));
+            CHECK(r[4].empty() == (r[3] != "fit"));
+            if (r[3] == "fit") CHECK(std::isfinite(csv_number(r[4], "order")));
+            if (r[2] == "omega_err_max") status[r[0] + "/" + r[1]] = r[3];
+        }
+        CHECK(status["asymmetric_free/exact_splitting"] == "exact");
+        CHECK(status["asymmetric_free/no_gyro"] == "no_convergence");
+        CHECK(status["asymmetric_free/fincham"] == "fit");
+    }
+    SECTION("stability.csv carries each row's kind and reads back to the same file") {
+        const auto rows = read_stability(report_dir());
+        REQUIRE(rows.size() == 5 * 2 + 5);  // two damping ratios on sphere_pair, one spin rate on fast_spin
+        std::map<std::string, std::string> kind;
+        for (const auto& r : rows) kind[r.scene + "/" + r.scheme + "/" + std::to_string(r.zeta)] = stability_kind(r);
+        CHECK(kind["sphere_pair/fincham/0.000000"] == "sharp");
+        CHECK(kind["sphere_pair/zvw/0.000000"] == "weak");
+        CHECK(stability_csv(rows) == read(report_dir() / "stability.csv"));
+        CHECK(stability_spin_csv(rows) == read(report_dir() / "stability_spin.csv"));
+    }
+    SECTION("the plots have units on their axes, at most 8 series per panel, and panels of one width") {
+        int scripts = 0;
+        for (const auto& entry : fs::directory_iterator(report_dir() / "plots")) {
+            if (entry.path().extension() != ".gp") continue;
+            ++scripts;
+            const std::string script = read(entry.path());
+            INFO(entry.path().filename().string());
+            std::set<std::string> widths;
+            double left = 0;
+            for (const auto& l : lines(script)) {
+                std::smatch m;
+                if (std::regex_search(l, m, std::regex(R"(set [xy]label '(.*)')"))) CHECK(std::regex_search(m[1].str(), std::regex(R"(\(.+\)$)")));
+                if (std::regex_search(l, m, std::regex(R"(set lmargin at screen ([0-9.]+))"))) left = std::stod(m[1]);
+                if (std::regex_search(l, m, std::regex(R"(set rmargin at screen ([0-9.]+))")))
+                    widths.insert(fmt::format("{:.3f}", std::stod(m[1]) - left));
+            }
+            CHECK(widths.size() <= 1);
+            // Each plot command, continued over "\" lines, names at most 8 series.
+            std::string command;
+            for (const auto& l : lines(script)) {
+                if (l.rfind("plot ", 0) == 0) command = l;
+                else if (!command.empty()) command += l;
+                if (!command.empty() && (l.empty() || l.back() != '\\')) {
+                    std::size_t titles = 0;
+                    for (std::size_t at = command.find(" title '"); at != std::string::npos; at = command.find(" title '", at + 1)) ++titles;
+                    CHECK(titles <= 8);
+                    command.clear();
+                }
             }
         }
+        CHECK(scripts >= 6);
     }
-    CHECK(scripts >= 6);
 }
