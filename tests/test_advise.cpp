@@ -89,6 +89,7 @@ TEST_CASE("advise refuses a particle that is not one, in one line with exit 2, b
         {{"--zeta", "-0.1"}, "--zeta"},
         {{"--omega", "-5"}, "--omega"},
         {{"--t-end", "-1"}, "--t-end"},
+        {{"--t-end", "1e-9"}, "shorter than one period of the contact"},
         {{"--schemes", "nope"}, "unknown scheme 'nope'"},
     };
     for (const auto& [change, message] : bad) {

@@ -118,7 +118,10 @@ ParamOverrides particle_params(const Particle& p) {
                              {"stiffness", {p.stiffness}},
                              {"zeta", {p.zeta}},
                              {"omega", {p.omega}}};
-    make_scene(scene_id, params);  // every value checked, named on error
+    const auto scene = make_scene(scene_id, params);  // every value checked, named on error
+    const double period = dynamic_cast<const StabilityProbe&>(*scene).period();
+    if (p.t_end > 0 && p.t_end < period)
+        throw InputError(fmt::format("--t-end: {:g} s is shorter than one period of the contact ({:.3g} s)", p.t_end, period));
     return params;
 }
 

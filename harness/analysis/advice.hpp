@@ -57,7 +57,8 @@ struct Advice {
 };
 
 // The scene's parameters for the particle (InputError, one line, for a particle that is not
-// one: non-positive or non-finite values, moments that violate the triangle inequality).
+// one: non-positive or non-finite values, moments that violate the triangle inequality, a
+// t_end shorter than one period of the contact).
 ParamOverrides particle_params(const Particle& p);
 
 // Every scheme of `schemes` that is sound, in parallel over `jobs`; the same numbers whatever
