@@ -27,7 +27,7 @@ std::string plot_script(const std::string& scene, double dt, const std::vector<c
                                      const auto at = std::find(schemes.begin(), schemes.end(), panels[p].schemes[i]) - schemes.begin();
                                      line += fmt::format("{}'../series/{}' using 1:2 with lines lw 1.5 {} title '{}'",
                                                          i ? ", \\\n     " : "", series_file_name(*runs[at]),
-                                                         series_style(i).substr(0, series_style(i).find(" pt")), panels[p].schemes[i]);
+                                                         series_colour(i), panels[p].schemes[i]);
                                  }
                                  return line + "\n";
                              });

@@ -74,10 +74,14 @@ std::string panel_grid_script(const std::string& output_line, const std::string&
     return s + "unset multiplot\n";
 }
 
-std::string series_style(std::size_t i) {
+std::string series_colour(std::size_t i) {
     static const char* colours[] = {"#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd", "#8c564b", "#e377c2", "#17becf"};
+    return fmt::format("lc rgb '{}'", colours[i % 8]);
+}
+
+std::string series_style(std::size_t i) {
     static const int points[] = {7, 5, 9, 11, 13, 4, 6, 8};
-    return fmt::format("lc rgb '{}' pt {}", colours[i % 8], points[i % 8]);
+    return fmt::format("{} pt {}", series_colour(i), points[i % 8]);
 }
 
 }  // namespace rotbench

@@ -39,7 +39,9 @@ std::vector<std::string> best_of_families(const ResultSet& set, const std::vecto
 std::string panel_grid_script(const std::string& output_line, const std::string& title, const std::string& setup,
                               const std::vector<Panel>& panels, const std::function<std::string(std::size_t)>& plot);
 
-// The gnuplot style of the i-th series of a panel (colour and point type), distinct for i < 8.
+// The gnuplot style of the i-th series of a panel (colour and point type), distinct for i < 8;
+// its colour alone, for lines without points.
 std::string series_style(std::size_t i);
+std::string series_colour(std::size_t i);
 
 }  // namespace rotbench

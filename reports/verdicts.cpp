@@ -1,5 +1,6 @@
 #include "reports/verdicts.hpp"
 
+#include "harness/analysis/median.hpp"
 #include "harness/analysis/round_off.hpp"
 
 #include <algorithm>
@@ -119,12 +120,6 @@ std::string stability_cell(const std::vector<StabilityRow>& stability, const std
     if (!(hi > 0)) return "—";
     const std::string r = hi - lo < 0.005 ? fmt::format("{:.2f}", lo) : fmt::format("{:.3g}–{:.3g}", lo, hi);
     return weak.empty() ? r : r + " (weak: " + weak + ")";
-}
-
-double median(std::vector<double> v) {
-    if (v.empty()) return NAN;
-    std::sort(v.begin(), v.end());
-    return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 #include "harness/analysis/advice.hpp"
 
+#include "harness/analysis/median.hpp"
 #include "harness/analysis/order_fit.hpp"
 #include "harness/analysis/stability.hpp"
 #include "harness/analysis/stability_study.hpp"
@@ -19,11 +20,6 @@ const std::string scene_id = "particle_contact";
 double relative_error(const RunResult& r) { return r.value("omega_err_max") / r.value("omega_ref_max"); }
 
 bool stable(const RunResult& r) { return r.failure.empty() && r.value("unstable") == 0.0 && std::isfinite(relative_error(r)); }
-
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v.empty() ? NAN : v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
-}
 
 struct Outcome {
     bool recommended = false;

@@ -1,4 +1,5 @@
 #include "harness/gate/compare.hpp"
+#include "harness/analysis/median.hpp"
 
 #include "harness/analysis/mann_whitney.hpp"
 #include "harness/analysis/order_fit.hpp"
@@ -33,12 +34,6 @@ Verdict verdict(const std::string& id, const std::string& scene, const std::stri
     v.of.scheme = scheme;
     v.of.location = where;
     return v;
-}
-
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    const std::size_t n = v.size();
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
 }  // namespace
