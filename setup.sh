@@ -8,7 +8,7 @@ set -euo pipefail
 cd "$(dirname "$0")"
 
 packages=(cmake ninja-build g++ libeigen3-dev libxsimd-dev catch2 libbenchmark-dev valgrind libboost-dev libgsl-dev libfmt-dev
-          libcli11-dev libtomlplusplus-dev nlohmann-json3-dev gnuplot-nox python3)  # python3: benchmarks/cost.sh
+          libcli11-dev libtomlplusplus-dev nlohmann-json3-dev gnuplot-nox python3)  # python3: benchmarks/cost.py
 
 missing=()
 for p in "${packages[@]}"; do
@@ -29,7 +29,7 @@ case "${1:-build}" in
   build)  ;;
   report) "$build/rotbench" run --out out/default --overwrite
           "$build/rotbench" stability --out out/default --overwrite   # into the report (about 7 s)
-          benchmarks/cost.sh "$build" out/default          # the cost table (about 5 min)
+          benchmarks/cost.py "$build" out/default          # the quick cost table (about 30 s)
           "$build/rotbench" report out/default
           echo "setup: report written to out/default/report.md" ;;
   test)   ctest --test-dir "$build" --output-on-failure --parallel "$(nproc)" --label-exclude slow ;;

@@ -64,23 +64,29 @@ std::string cost_section(const std::filesystem::path& dir) {
                      "counts.\n\n";
     const auto rows = read_rows(dir);
     if (!rows) {
-        return md + "No cost table here: `benchmarks/cost.sh BUILD " + dir.string() + "` measures it and "
+        return md + "No cost table here: `benchmarks/cost.py BUILD " + dir.string() + "` measures it and "
                     "`rotbench report " + dir.string() + "` then includes it (README \"Speed\").\n\n";
     }
-    md += "*Batched 1e6-body time*: each scheme stepping 1e6 bodies with random states and torques read from memory "
-          "(`rotbench_bench`, Google Benchmark: 10 processes of 3 repetitions in random interleaved order, since times differ "
-          "between processes more than repetitions average out; a scheme of more than 5000 instructions per body-step, 2 "
-          "processes of 4; the least time of all repetitions, since the other tenants of the shared machine only add time; "
-          "spread = (max - min) / least), batched and one body at a time through the scheme interface. `load_store` reads "
-          "and writes the same state and computes nothing: the floor of the batched loops. The seed schemes step packs of "
-          "four bodies (AVX2, `schemes/simd.hpp`); the others one body at a time in both columns.\n\n"
-          "| scheme | batched (ns / body-step) | spread | one at a time (ns / body-step) | spread | speed-up | batched / direct |\n"
-          "|---|--:|--:|--:|--:|--:|--:|\n";
+    const bool thorough = !rows->empty() && rows->front().count("mode") && rows->front().at("mode") == "thorough";
+    md += fmt::format(
+        "*Batched 1e6-body time*: each scheme stepping 1e6 bodies with random states and torques read from memory "
+        "(`rotbench_bench`, Google Benchmark), batched and one body at a time through the scheme interface; {}, in random "
+        "interleaved order; the least time of the repetitions, since the other tenants of the shared machine only add time; "
+        "spread = (max - min) / least. A scheme of more than 5000 instructions per body-step is timed at 1e5 bodies (column "
+        "*bodies*), where moving its state is well under 1 % of its step. `load_store` reads and writes the same state and "
+        "computes nothing: the floor of the batched loops. Schemes written as templates on their scalar step packs of four "
+        "bodies (AVX2, `schemes/simd.hpp`).\n\n"
+        "| scheme | bodies | batched (ns / body-step) | spread | one at a time (ns / body-step) | spread | speed-up | batched / direct |\n"
+        "|---|--:|--:|--:|--:|--:|--:|--:|\n",
+        thorough ? "10 processes of 3 repetitions (`benchmarks/cost.py --thorough`), since times differ between processes more "
+                   "than repetitions average out"
+                 : "two consecutive tables, one process of 3 repetitions each (`benchmarks/cost.py`; `--thorough` runs the "
+                   "10-process study)");
     for (auto r : *rows)
-        md += fmt::format("| {} | {} | {} | {} | {} | {} | {} |\n", r["scheme"], number(r["ns_batched"], "{:.1f}"),
-                          number(r["ns_batched_spread"], "{:.1f} %", 100.0), number(r["ns_alone"], "{:.1f}"),
-                          number(r["ns_alone_spread"], "{:.1f} %", 100.0), number(r["speedup"], "{:.2f}x"),
-                          number(r["ns_ratio_to_direct"], "{:.2f}"));
+        md += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} |\n", r["scheme"], number(r["bodies"], "{:.0e}"),
+                          number(r["ns_batched"], "{:.1f}"), number(r["ns_batched_spread"], "{:.1f} %", 100.0),
+                          number(r["ns_alone"], "{:.1f}"), number(r["ns_alone_spread"], "{:.1f} %", 100.0),
+                          number(r["speedup"], "{:.2f}x"), number(r["ns_ratio_to_direct"], "{:.2f}"));
     md += "\n*Instruction counts* per body-step, by callgrind (1000 bodies batched, and one body), which do not depend on the "
           "machine's load. What limits a scheme: *memory share* is load_store's batched time over the scheme's (the part "
           "that moving the state alone takes); *libm* is the part of its instructions, one body at a time, spent in sin, cos "
@@ -98,10 +104,19 @@ std::string cost_section(const std::filesystem::path& dir) {
     const auto spread = largest(*rows, {"ns_batched_spread", "ns_alone_spread"});
     md += fmt::format("\nLargest spread of a time over its repetitions: {:.1f} % ({}).", 100.0 * spread.first, spread.second);
     const auto speedup = largest(*rows, {"speedup_runs_differ"}), ratio = largest(*rows, {"ns_ratio_runs_differ"});
-    if (!speedup.second.empty() || !ratio.second.empty())
-        md += fmt::format(" Repeatability: the odd and the even processes, each a cost table of its own, agree within "
-                          "{:.1f} % on every speed-up (largest difference: {}) and within {:.1f} % on every batched / direct (largest: {}).",
+    if (!speedup.second.empty() || !ratio.second.empty()) {
+        md += fmt::format(" Repeatability: {} agree within {:.1f} % on every speed-up (largest difference: {}) and within {:.1f} % "
+                          "on every batched / direct (largest: {}).",
+                          thorough ? "the odd and the even processes, each a cost table of its own," : "the two consecutive tables",
                           100.0 * speedup.first, speedup.second, 100.0 * ratio.first, ratio.second);
+        std::string noisy;
+        for (const Row& r : *rows) {
+            const auto above = [&](const char* c) { return r.count(c) && !r.at(c).empty() && std::stod(r.at(c)) > 0.03; };
+            if (above("speedup_runs_differ") || above("ns_ratio_runs_differ")) noisy += (noisy.empty() ? "" : ", ") + r.at("scheme");
+        }
+        md += noisy.empty() ? " The machine's noise stayed within 3 % on every ratio."
+                            : " The machine's noise exceeds 3 % on the ratios of " + noisy + ": read their figures as that uncertain.";
+    }
     md += " Instruction counts are exact: two counts of the same binary agree to the instruction.\n\n";
     return md;
 }

@@ -1,6 +1,6 @@
 // The report's cost table: per body-step times (Google Benchmark, batched and one body at a
 // time) and instruction counts (callgrind) of every scheme, read from DIR/cost.csv, which
-// benchmarks/cost.sh writes.
+// benchmarks/cost.py writes.
 #pragma once
 
 #include <filesystem>
