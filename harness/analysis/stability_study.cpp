@@ -35,8 +35,16 @@ void check_stability_scenes(const std::vector<std::string>& scenes) {
             throw InputError("scene '" + scene + "' is not a stability scene; valid: " + join(valid, ", "));
 }
 
+std::size_t stability_case_count(const std::vector<std::string>& scenes, const std::vector<std::string>& schemes,
+                                 const std::vector<double>& zetas, const std::vector<double>& omegas) {
+    std::size_t count = 0;
+    for (const auto& scene : scenes) count += (scene == "fast_spin" ? omegas.size() : zetas.size()) * schemes.size();
+    return count;
+}
+
 std::vector<StabilityRow> stability_study(const std::vector<std::string>& scenes, const std::vector<std::string>& schemes,
-                                          const std::vector<double>& zetas, const std::vector<double>& omegas, int jobs) {
+                                          const std::vector<double>& zetas, const std::vector<double>& omegas, int jobs,
+                                          Progress* progress) {
     check_stability_scenes(scenes);
     std::vector<StabilityRow> rows;
     for (const auto& scene : scenes) {
@@ -46,6 +54,14 @@ std::vector<StabilityRow> stability_study(const std::vector<std::string>& scenes
     }
     parallel_for(rows.size(), jobs, [&](std::size_t i) {
         StabilityRow& r = rows[i];
+        if (progress) progress->started(i, r.scheme + " on " + r.scene);
+        struct Finish {  // also when the case throws
+            Progress* progress;
+            std::size_t i;
+            ~Finish() {
+                if (progress) progress->finished(i);
+            }
+        } finish{progress, i};
         const auto scene = make_scene(r.scene, overrides(r));
         const auto& probe = dynamic_cast<const StabilityProbe&>(*scene);
         const StabilityCriterion c{stability_horizon_periods * probe.period(), stability_growth};

@@ -2,6 +2,8 @@
 // ratio; the measured limit, the eigenvalue limit and Peng et al.'s prediction.
 #pragma once
 
+#include "harness/io/progress.hpp"
+
 #include <string>
 #include <utility>
 #include <vector>
@@ -32,8 +34,13 @@ inline constexpr double stability_growth = 1e6;
 // InputError unless every id is a scene with a stability probe (the valid ones listed).
 void check_stability_scenes(const std::vector<std::string>& scenes);
 
+// `progress`, when given, hears of every case as it starts and ends (harness/io/progress.hpp).
 std::vector<StabilityRow> stability_study(const std::vector<std::string>& scenes, const std::vector<std::string>& schemes,
-                                          const std::vector<double>& zetas, const std::vector<double>& omegas, int jobs);
+                                          const std::vector<double>& zetas, const std::vector<double>& omegas, int jobs,
+                                          Progress* progress = nullptr);
+// How many cases stability_study runs for these inputs (progress counts them).
+std::size_t stability_case_count(const std::vector<std::string>& scenes, const std::vector<std::string>& schemes,
+                                 const std::vector<double>& zetas, const std::vector<double>& omegas);
 
 // The spectral radius of each scheme's step map against dt, undamped, for each contact scene
 // among `scenes` that can be linearised at rest: 41 steps from 1/30 to 3 times Peng's prediction.

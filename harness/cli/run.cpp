@@ -29,7 +29,7 @@ struct RunOptionsText {
     std::vector<std::string> settings, tolerances;
     int energy_series = 200;
     int jobs = core_count();
-    bool overwrite = false, quick = false;
+    bool overwrite = false, quick = false, quiet = false;
 };
 
 // The sweep the options describe: the config file first, the command line over it.
@@ -54,6 +54,7 @@ void add_run_options(CLI::App& cmd, RunOptionsText& o) {
     cmd.add_option("--set", o.settings, "scene parameter, SCENE.KEY=VALUE (repeatable; VALUE may be a comma list)");
     cmd.add_option("--config", o.config, "TOML file with [run] selections and [SCENE] parameters");
     cmd.add_flag("--quick", o.quick, "each scene's short ladder of time steps (for CI)");
+    cmd.add_flag("--quiet", o.quiet, "no progress on stderr and no line per failed run");
     cmd.add_option("--shard", o.shard, "K/N: run only the K-th of N deterministic slices (combine with merge)");
     cmd.add_option("--resume", o.resume, "DIR: finish the interrupted run in DIR (with its own options; no other may be given)");
     cmd.add_option("--jobs", o.jobs, "runs in parallel (results do not depend on it)")
@@ -98,7 +99,7 @@ int run_sweep_command(const RunOptionsText& o, const Invocation& how) {
     RunOptions options;
     options.series_samples = o.energy_series;
     o.isolation.apply(options);
-    const SweepOutcome outcome = sweep_plan(slice, &dir, how, options, o.jobs, false);
+    const SweepOutcome outcome = sweep_plan(slice, &dir, how, options, o.jobs, false, o.quiet);
     if (outcome.exit_status) return outcome.exit_status;
     if (!slice.shard) write_outputs(dir, outcome.results, how.command_line, report, how.out);
     else write_slice(dir, slice, outcome.results, how.out);  // no orders or report: they need every run

@@ -7,10 +7,13 @@
 #include "harness/engine/parallel.hpp"
 #include "harness/io/output_files.hpp"
 #include "harness/io/parse.hpp"
+#include "harness/io/progress.hpp"
 #include "harness/io/stability_csv.hpp"
 #include "harness/scenes/scene.hpp"
 #include "reports/stability_report.hpp"
 #include "schemes/scheme.hpp"
+
+#include <optional>
 
 namespace rotbench {
 namespace {
@@ -25,6 +28,7 @@ public:
         command.add_option("--out", out_, "output directory")->capture_default_str();
         command.add_option("--jobs", jobs_, "cases in parallel")->check(CLI::Range(1, max_jobs));
         command.add_flag("--overwrite", overwrite_, "replace results already in --out");
+        command.add_flag("--quiet", quiet_, "no progress on stderr");
     }
     int run(const Invocation& how) override {
         const auto scenes = parse_id_list(scenes_, SceneRegistry::instance(), "scene");
@@ -35,7 +39,12 @@ public:
         check_stability_scenes(scenes);
         const OutputDir dir = OutputDir::open(out_, {"stability", "stability.csv", {"stability.csv", "stability_spin.csv", "stability.md"},
                                                      overwrite_});
-        const auto rows = stability_study(scenes, schemes, zetas, omegas, jobs_);
+        // Every case weighs the same: each searches its limit over about as many steps.
+        std::optional<Progress> progress;
+        progress.emplace(how.err, Progress::mode_for(how.err, quiet_), "stability",
+                         std::vector<double>(stability_case_count(scenes, schemes, zetas, omegas), 1.0));
+        const auto rows = stability_study(scenes, schemes, zetas, omegas, jobs_, &*progress);
+        progress.reset();  // the status line cleared before the last line
         dir.write("stability.csv", stability_csv(rows));
         dir.write("stability_spin.csv", stability_spin_csv(rows));
         ResultSet families;  // the schemes' families, for the plots' panels
@@ -50,7 +59,7 @@ public:
 private:
     std::string scenes_ = "sphere_pair,ellipsoid_pair,fast_spin", schemes_, zetas_ = "0,0.1,0.3,0.5", omegas_ = "10,100,1000",
                 out_ = "rotbench-stability";
-    bool overwrite_ = false;
+    bool overwrite_ = false, quiet_ = false;
     int jobs_ = core_count();
 };
 

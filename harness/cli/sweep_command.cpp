@@ -5,6 +5,7 @@
 #include "harness/io/journal.hpp"
 #include "harness/io/parse.hpp"
 #include "harness/io/output_files.hpp"
+#include "harness/io/progress.hpp"
 #include "harness/io/results_csv.hpp"
 #include "harness/io/series_csv.hpp"
 
@@ -47,7 +48,7 @@ PlanSlice slice_plan(std::vector<RunSpec> plan, const std::string& shard_text) {
 }
 
 SweepOutcome sweep_plan(const PlanSlice& slice, const OutputDir* dir, const Invocation& how, const RunOptions& options, int jobs,
-                        bool timed_alone) {
+                        bool timed_alone, bool quiet) {
     const Shard shard = slice.shard.value_or(Shard{});
     const std::string journal_id = fmt::format("{}/{}/{}", slice.plan_id, shard.index, shard.count);
     std::optional<Journal> journal;
@@ -64,6 +65,15 @@ SweepOutcome sweep_plan(const PlanSlice& slice, const OutputDir* dir, const Invo
     std::mutex mutex;
     std::optional<OutputError> write_failure;  // the first; the sweep stops at it
     const InterruptGuard guard;
+    std::vector<std::size_t> left;  // the progress counts what is left to run, weighted by steps
+    for (const auto& phase : phases) left.insert(left.end(), phase.begin(), phase.end());
+    std::vector<double> weights;
+    std::map<std::size_t, std::size_t> item_of;
+    for (std::size_t i : left) {
+        item_of[i] = weights.size();
+        weights.push_back(slice.runs[i].t_end / slice.runs[i].dt);
+    }
+    Progress progress(how.err, Progress::mode_for(how.err, quiet), "run", std::move(weights));
     for (int phase = 0; phase < 2 && !interrupt_signal() && !write_failure; ++phase) {
         const auto& todo = phases[phase];
         std::vector<RunSpec> specs;
@@ -79,12 +89,18 @@ SweepOutcome sweep_plan(const PlanSlice& slice, const OutputDir* dir, const Invo
                     request_stop();  // no new run starts; the ones in flight stop
                     return;
                 }
-                how.out << fmt::format("{:<16} {:<16} {:<10} dt={:<10g} {}\n", r.spec.scene, r.spec.scheme, kind_name(r.spec.kind),
-                                       r.spec.dt, r.failure.empty() ? "ok" : "FAILED: " + r.failure);
+                if (!r.failure.empty() && !quiet)
+                    progress.note(how.out, fmt::format("{} {} {} dt={:g} FAILED: {}", r.spec.scene, r.spec.scheme,
+                                                       kind_name(r.spec.kind), r.spec.dt, r.failure));
+                progress.finished(item_of.at(todo[k]), !r.failure.empty());
                 std::lock_guard lock(mutex);
                 finished.insert_or_assign(todo[k], r);
             },
-            phase == 1 ? 1 : jobs);
+            phase == 1 ? 1 : jobs,
+            [&](std::size_t k) {
+                const RunSpec& s = slice.runs[todo[k]];
+                progress.started(item_of.at(todo[k]), fmt::format("{} {} dt={:g}", s.scene, s.scheme, s.dt));
+            });
     }
     if (write_failure) {
         std::size_t kept = 0;

@@ -38,14 +38,15 @@ struct IsolationOptions {
     void apply(RunOptions& options) const;  // InputError for a bad --run-timeout
 };
 
-// Runs the slice, `jobs` at a time, with a line per finished run on how.out. With a directory
+// Runs the slice, `jobs` at a time, with progress on how.err (harness/io/progress.hpp) and a
+// line per failed run on how.out, none of either when `quiet`. With a directory
 // every finished run goes to its journal (DIR/partial) first, and a resumed invocation
 // (how.resuming) runs only what is missing. `timed_alone`: the runs that are timed go last,
 // one at a time, so that they do not compete for the cores.
 // A file that cannot be written (a full disk) stops the sweep: the runs in flight finish, the
 // finished ones are kept in the journal, and the OutputError is rethrown.
 SweepOutcome sweep_plan(const PlanSlice& slice, const OutputDir* dir, const Invocation& how, const RunOptions& options, int jobs,
-                        bool timed_alone);
+                        bool timed_alone, bool quiet = false);
 
 // A slice's files for `rotbench merge`: results.csv, runs.csv, the energy series, shard.csv.
 inline const std::vector<std::string> slice_files = {"results.csv", "runs.csv", "shard.csv"};

@@ -65,7 +65,8 @@ std::vector<RunSpec> plan_sweep(const SweepSpec& spec) {
 }
 
 std::vector<RunResult> run_sweep(const std::vector<RunSpec>& plan, const RunOptions& options,
-                                 const std::function<void(std::size_t, const RunResult&)>& on_done, int jobs) {
+                                 const std::function<void(std::size_t, const RunResult&)>& on_done, int jobs,
+                                 const std::function<void(std::size_t)>& on_start) {
     std::vector<RunResult> results(plan.size());
     std::mutex done_mutex;
     // run_one records a failing scheme; what it throws is bad input (none expected after
@@ -73,6 +74,7 @@ std::vector<RunResult> run_sweep(const std::vector<RunSpec>& plan, const RunOpti
     const IsolationLimits limits{options.run_timeout, options.run_memory_mb ? options.run_memory_mb : isolation_memory(jobs)};
     parallel_for(plan.size(), jobs, [&](std::size_t i) {
         if (interrupt_signal()) return;
+        if (on_start) on_start(i);
         results[i] = isolated(plan[i].scheme) ? run_isolated(plan[i], options, limits) : run_one(plan[i], options);
         if (results[i].interrupted) return;
         std::lock_guard lock(done_mutex);

@@ -27,8 +27,10 @@ std::vector<RunSpec> plan_sweep(const SweepSpec& spec);
 // results come back in plan order whatever `jobs` is, and are the same bit for bit apart
 // from the timing metrics. `on_done(i, result)` is called after run i, one call at a time,
 // in the order the runs finish. Once SIGINT or SIGTERM is caught (harness/interrupt.hpp) no
-// run starts, the runs in flight stop, and on_done is not called for them.
+// run starts, the runs in flight stop, and on_done is not called for them. `on_start(i)` is
+// called as run i starts, from the thread that runs it.
 std::vector<RunResult> run_sweep(const std::vector<RunSpec>& plan, const RunOptions& options = {},
-                                 const std::function<void(std::size_t, const RunResult&)>& on_done = {}, int jobs = 1);
+                                 const std::function<void(std::size_t, const RunResult&)>& on_done = {}, int jobs = 1,
+                                 const std::function<void(std::size_t)>& on_start = {});
 
 }  // namespace rotbench
