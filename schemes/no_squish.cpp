@@ -16,31 +16,35 @@ namespace rotbench {
 namespace {
 
 struct NoSquishRotation {
-    // The exact flow of H_k for a time t. A pack takes its sines and cosines lane by lane from
-    // libm, so that each body gets the bits it gets alone.
-    template <class S>
-    static void rotate_about_axis(int k, double t, QuatT<S>& q, Vec3T<S>& momentum_body, const Vec3T<S>& inertia) {
-        const S phi = t * momentum_body[k] / inertia[k];
-        const S c = each_lane(phi, [](double x) { return std::cos(x); }), s = each_lane(phi, [](double x) { return std::sin(x); });
-        const int i = (k + 1) % 3, j = (k + 2) % 3;
+    // The exact flow of H_k for a time t: the turn by phi about body axis k is the exponential
+    // map of the shared helpers (schemes/quaternion.hpp: series below a radian, so a pack gets
+    // the bits of the bodies alone), (cos(phi/2), sin(phi/2) e_k); the body momentum turns by
+    // -phi, with cos(phi) and sin(phi) from the half angle by the double-angle formulas.
+    // k is a template argument so that every index below is known when compiled: a pack's
+    // components then stay in registers (with k a variable they went through memory).
+    template <int k, class S>
+    ROTBENCH_INLINE static void rotate_about_axis(double t, QuatT<S>& q, Vec3T<S>& momentum_body, const Vec3T<S>& inertia) {
+        Vec3T<S> theta = Vec3T<S>::Zero();
+        theta[k] = t * momentum_body[k] / inertia[k];
+        const QuatT<S> turn = rotation_from_vector<S>(theta);
+        const S half_cos = turn.w(), half_sin = turn.vec()[k];
+        const S c = half_cos * half_cos - half_sin * half_sin, s = 2.0 * half_cos * half_sin;
+        constexpr int i = (k + 1) % 3, j = (k + 2) % 3;
         const S li = momentum_body[i], lj = momentum_body[j];
         momentum_body[i] = c * li + s * lj;  // the fixed vector L seen from the turned body
         momentum_body[j] = -s * li + c * lj;
-        Vec3T<S> half_angle = Vec3T<S>::Zero();
-        half_angle[k] = each_lane(S(0.5 * phi), [](double x) { return std::sin(x); });
-        q = q * QuatT<S>(each_lane(S(0.5 * phi), [](double x) { return std::cos(x); }), half_angle.x(), half_angle.y(),
-                         half_angle.z());
+        q = q * turn;
     }
 
     template <class S>
     static QuatT<S> rotate(const RigidBodyT<S>& start, const Vec3T<S>& momentum, double dt) {
         QuatT<S> q = start.q;
         Vec3T<S> l = to_body(q, momentum);
-        rotate_about_axis<S>(2, 0.5 * dt, q, l, start.inertia);
-        rotate_about_axis<S>(1, 0.5 * dt, q, l, start.inertia);
-        rotate_about_axis<S>(0, dt, q, l, start.inertia);
-        rotate_about_axis<S>(1, 0.5 * dt, q, l, start.inertia);
-        rotate_about_axis<S>(2, 0.5 * dt, q, l, start.inertia);
+        rotate_about_axis<2, S>(0.5 * dt, q, l, start.inertia);
+        rotate_about_axis<1, S>(0.5 * dt, q, l, start.inertia);
+        rotate_about_axis<0, S>(dt, q, l, start.inertia);
+        rotate_about_axis<1, S>(0.5 * dt, q, l, start.inertia);
+        rotate_about_axis<2, S>(0.5 * dt, q, l, start.inertia);
         return q;
     }
 };
