@@ -13,6 +13,11 @@
                                moving its state is then well under 1 % of its step.
   memory_share                 load_store's batched time (the same loops computing nothing) over
                                the scheme's.
+  public, public_ratio_batched,  for a scheme with a public code's counterpart (a plug-in scheme named
+  public_ratio_alone,          `<scheme>__<code>`; BUILD_DIR/rotbench_public_counterparts.so is loaded by
+  public_ratio_runs_differ     default: LAMMPS's and Yade's arithmetic written anew), its id and the
+                               counterpart's time over the scheme's, batched and alone (above 1: rotbench
+                               is faster), and how much the batched ratio differs between the tables.
   speedup_runs_differ,         how much the speed-up and batched / direct differ between two
   ns_ratio_runs_differ         consecutive cost tables, |table 1 / table 2 - 1|: the
                                repeatability of the figures, stated rather than assumed.
@@ -41,7 +46,9 @@ import time
 SLOW_INSTRUCTIONS = 5000
 COLUMNS = ["scheme", "bodies", "ns_batched", "ns_batched_spread", "ns_alone", "ns_alone_spread", "speedup",
            "instr_batched", "instr_alone", "ns_ratio_to_direct", "instr_ratio_to_direct", "libm_instr_alone",
-           "memory_share", "speedup_runs_differ", "ns_ratio_runs_differ", "mode"]
+           "memory_share", "speedup_runs_differ", "ns_ratio_runs_differ", "public", "public_ratio_batched",
+           "public_ratio_alone", "public_ratio_runs_differ", "mode"]
+PUBLIC_COUNTERPARTS = "rotbench_public_counterparts.so"
 
 
 class Progress:
@@ -162,6 +169,7 @@ def main():
     parser.add_argument("--thorough", action="store_true", help="the many-process repeatability study (minutes)")
     parser.add_argument("--quiet", action="store_true", help="no progress")
     parser.add_argument("--plugin", action="append", default=[], metavar="PATH", help="a plug-in's schemes too")
+    parser.add_argument("--no-public", action="store_true", help=f"without BUILD_DIR/{PUBLIC_COUNTERPARTS}")
     args = parser.parse_args()
     bench, driver = os.path.join(args.build, "rotbench_bench"), os.path.join(args.build, "rotbench_step_driver")
     for tool in (bench, driver):
@@ -169,7 +177,11 @@ def main():
             fail(f"no {tool}: build first (./setup.sh build)")
     if os.path.exists(args.out) and not os.path.isdir(args.out):
         fail(f"{args.out} exists and is not a directory")
-    plugin_args = [a for p in args.plugin for a in ("--plugin", os.path.abspath(p))]
+    plugins = list(args.plugin)
+    public = os.path.join(args.build, PUBLIC_COUNTERPARTS)
+    if not args.no_public and os.path.exists(public):
+        plugins.append(public)
+    plugin_args = [a for p in plugins for a in ("--plugin", os.path.abspath(p))]
     schemes = run([driver, *plugin_args, "--list"]).split()
     if "direct" not in schemes:
         fail("no scheme `direct` registered: the ratios are to it")
@@ -211,8 +223,13 @@ def main():
     def ns_ratio(table, s):
         return least(table, "batched", s) / least(table, "batched", "direct")
 
-    def differ(f, s):
-        return abs(f(tables[0], s) / f(tables[1], s) - 1)
+    def differ(f, s, *more):
+        return abs(f(tables[0], s, *more) / f(tables[1], s, *more) - 1)
+
+    def public_ratio(table, s, p, kind="batched"):
+        return least(table, kind, p) / least(table, kind, s)
+
+    counterpart = {p.split("__")[0]: p for p in schemes if "__" in p and p.split("__")[0] in schemes}
 
     def spread(values):
         return (max(values) - min(values)) / min(values)
@@ -221,12 +238,16 @@ def main():
     target = os.path.join(args.out, "cost.csv")
     mode = "thorough" if args.thorough else "quick"
     rows = [["load_store", 1000000, floor, spread(pooled["load_store/1000000"])] + [""] * (len(COLUMNS) - 5) + [mode]]
+    pooled_table = {n: pooled[n] for n in names}
     direct_ns = min(pooled[f"batched/direct/{size['direct']}"])
     for s in sorted(schemes):
         b, a = min(pooled[f"batched/{s}/{size[s]}"]), min(pooled[f"one_at_a_time/{s}/{size[s]}"])
         rows.append([s, size[s], b, spread(pooled[f"batched/{s}/{size[s]}"]), a, spread(pooled[f"one_at_a_time/{s}/{size[s]}"]),
                      a / b, batched_i[s], alone[s][0], b / direct_ns, batched_i[s] / batched_i["direct"], alone[s][1],
-                     floor / b if size[s] == 1000000 else "", differ(speedup, s), differ(ns_ratio, s), mode])
+                     floor / b if size[s] == 1000000 else "", differ(speedup, s), differ(ns_ratio, s)]
+                    + ([counterpart[s], public_ratio(pooled_table, s, counterpart[s]),
+                        public_ratio(pooled_table, s, counterpart[s], "one_at_a_time"), differ(public_ratio, s, counterpart[s])]
+                       if s in counterpart else ["", "", "", ""]) + [mode])
     fd, temporary = tempfile.mkstemp(dir=args.out, prefix=".cost.csv.")  # beside the target: os.replace is atomic
     try:
         with os.fdopen(fd, "w", newline="") as f:

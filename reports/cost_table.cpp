@@ -101,6 +101,19 @@ std::string cost_section(const std::filesystem::path& dir) {
                           number(r["instr_alone"], "{:.0f}"), number(r["instr_ratio_to_direct"], "{:.2f}"), libm,
                           number(r["memory_share"], "{:.0f} %", 100.0));
     }
+    std::string against;
+    for (auto r : *rows)
+        if (!r["public"].empty())
+            against += fmt::format("| {} | `{}` | {} | {} | {} |\n", r["scheme"], r["public"], number(r["public_ratio_batched"], "{:.2f}"),
+                                   number(r["public_ratio_alone"], "{:.2f}"), number(r["public_ratio_runs_differ"], "{:.1f} %", 100.0));
+    if (!against.empty())
+        md += "\n*Against public codes*: each scheme beside the same algorithm as a public DEM or MD code computes it (its "
+              "arithmetic read in that code's sources and written anew as the plug-in `rotbench_public_counterparts`, id "
+              "`<scheme>__<code>`, built with the same flags and timed in the same runs): the counterpart's time over the "
+              "scheme's, batched at the table's size and one body at a time; above 1, rotbench's scheme is faster. *Tables "
+              "differ*: how much the batched ratio differs between the two tables.\n\n"
+              "| scheme | compared with | batched: public / rotbench | one at a time: public / rotbench | tables differ |\n"
+              "|---|---|--:|--:|--:|\n" + against;
     const auto spread = largest(*rows, {"ns_batched_spread", "ns_alone_spread"});
     md += fmt::format("\nLargest spread of a time over its repetitions: {:.1f} % ({}).", 100.0 * spread.first, spread.second);
     const auto speedup = largest(*rows, {"speedup_runs_differ"}), ratio = largest(*rows, {"ns_ratio_runs_differ"});
