@@ -72,18 +72,19 @@ std::string cost_section(const std::filesystem::path& dir) {
         "*Batched 1e6-body time*: each scheme stepping 1e6 bodies with random states and torques read from memory "
         "(`rotbench_bench`, Google Benchmark), batched and one body at a time through the scheme interface; {}, in random "
         "interleaved order; the least time of the repetitions, since the other tenants of the shared machine only add time; "
-        "spread = (max - min) / least. A scheme of more than 5000 instructions per body-step is timed at 1e5 bodies (column "
-        "*bodies*), where moving its state is well under 1 % of its step. `load_store` reads and writes the same state and "
+        "spread = (max - min) / least. A scheme of more than 5000 instructions per body-step is timed at 1e5 bodies (marked "
+        "so), where moving its state is well under 1 % of its step. `load_store` reads and writes the same state and "
         "computes nothing: the floor of the batched loops. Schemes written as templates on their scalar step packs of four "
         "bodies (AVX2, `schemes/simd.hpp`).\n\n"
-        "| scheme | bodies | batched (ns / body-step) | spread | one at a time (ns / body-step) | spread | speed-up | batched / direct |\n"
-        "|---|--:|--:|--:|--:|--:|--:|--:|\n",
+        "| scheme | batched (ns / body-step) | spread | one at a time (ns / body-step) | spread | speed-up | batched / direct |\n"
+        "|---|--:|--:|--:|--:|--:|--:|\n",
         thorough ? "10 processes of 3 repetitions (`benchmarks/cost.py --thorough`), since times differ between processes more "
                    "than repetitions average out"
                  : "two consecutive tables, one process of 3 repetitions each (`benchmarks/cost.py`; `--thorough` runs the "
                    "10-process study)");
     for (auto r : *rows)
-        md += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} |\n", r["scheme"], number(r["bodies"], "{:.0e}"),
+        md += fmt::format("| {}{} | {} | {} | {} | {} | {} | {} |\n", r["scheme"],
+                          r["bodies"].empty() || std::stod(r["bodies"]) == 1e6 ? "" : number(r["bodies"], " ({:.0e} bodies)"),
                           number(r["ns_batched"], "{:.1f}"), number(r["ns_batched_spread"], "{:.1f} %", 100.0),
                           number(r["ns_alone"], "{:.1f}"), number(r["ns_alone_spread"], "{:.1f} %", 100.0),
                           number(r["speedup"], "{:.2f}x"), number(r["ns_ratio_to_direct"], "{:.2f}"));

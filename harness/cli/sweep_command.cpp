@@ -65,14 +65,13 @@ SweepOutcome sweep_plan(const PlanSlice& slice, const OutputDir* dir, const Invo
     std::mutex mutex;
     std::optional<OutputError> write_failure;  // the first; the sweep stops at it
     const InterruptGuard guard;
-    std::vector<std::size_t> left;  // the progress counts what is left to run, weighted by steps
-    for (const auto& phase : phases) left.insert(left.end(), phase.begin(), phase.end());
-    std::vector<double> weights;
+    std::vector<double> weights;  // the progress counts what is left to run, weighted by steps
     std::map<std::size_t, std::size_t> item_of;
-    for (std::size_t i : left) {
-        item_of[i] = weights.size();
-        weights.push_back(slice.runs[i].t_end / slice.runs[i].dt);
-    }
+    for (const auto& phase : phases)
+        for (std::size_t i : phase) {
+            item_of[i] = weights.size();
+            weights.push_back(slice.runs[i].t_end / slice.runs[i].dt);
+        }
     Progress progress(how.err, Progress::mode_for(how.err, quiet), "run", std::move(weights));
     for (int phase = 0; phase < 2 && !interrupt_signal() && !write_failure; ++phase) {
         const auto& todo = phases[phase];
