@@ -22,7 +22,7 @@
   ns_ratio_runs_differ         consecutive cost tables, |table 1 / table 2 - 1|: the
                                repeatability of the figures, stated rather than assumed.
 
-Quick (the default, about 30 s): the counts, then two timing tables, one benchmark process
+Quick (the default, about 25 s): the counts, then two timing tables, one benchmark process
 each, 2 repetitions of every benchmark in random interleaved order. --thorough: the
 repeatability study, 10 processes of 3 repetitions, the two
 tables being the odd and the even processes (docs/performance.md says why; several minutes).
@@ -189,7 +189,7 @@ def main():
     os.makedirs(args.out, exist_ok=True)
 
     with tempfile.TemporaryDirectory() as tmp:
-        sizes = [(1, 2000), (1000, 20)] if args.thorough else [(1, 1000), (1000, 10)]
+        sizes = [(1, 2000), (1000, 20)] if args.thorough else [(1, 500), (1000, 5)]
         counts, started = {}, time.monotonic()
         with concurrent.futures.ThreadPoolExecutor(max_workers=os.cpu_count() or 1) as pool:
             jobs = {pool.submit(count_instructions, driver, plugin_args, s, sizes, tmp): s for s in schemes}
@@ -211,7 +211,7 @@ def main():
         tables = halves
     else:
         for k in range(2):
-            tables.append(bench_table(bench, plugin_args, names, 1, 3, progress, f"timing, table {k + 1} of 2,"))
+            tables.append(bench_table(bench, plugin_args, names, 1, 2, progress, f"timing, table {k + 1} of 2,"))
     pooled = {n: tables[0][n] + tables[1][n] for n in names}
 
     def least(table, kind, s):

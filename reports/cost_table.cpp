@@ -80,7 +80,7 @@ std::string cost_section(const std::filesystem::path& dir) {
         "|---|--:|--:|--:|--:|--:|--:|\n",
         thorough ? "10 processes of 3 repetitions (`benchmarks/cost.py --thorough`), since times differ between processes more "
                    "than repetitions average out"
-                 : "two consecutive tables, one process of 3 repetitions each (`benchmarks/cost.py`; `--thorough` runs the "
+                 : "two consecutive tables, one process of 2 repetitions each (`benchmarks/cost.py`; `--thorough` runs the "
                    "10-process study)");
     for (auto r : *rows)
         md += fmt::format("| {}{} | {} | {} | {} | {} | {} | {} |\n", r["scheme"],
