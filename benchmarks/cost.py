@@ -238,15 +238,14 @@ def main():
     target = os.path.join(args.out, "cost.csv")
     mode = "thorough" if args.thorough else "quick"
     rows = [["load_store", 1000000, floor, spread(pooled["load_store/1000000"])] + [""] * (len(COLUMNS) - 5) + [mode]]
-    pooled_table = {n: pooled[n] for n in names}
     direct_ns = min(pooled[f"batched/direct/{size['direct']}"])
     for s in sorted(schemes):
         b, a = min(pooled[f"batched/{s}/{size[s]}"]), min(pooled[f"one_at_a_time/{s}/{size[s]}"])
         rows.append([s, size[s], b, spread(pooled[f"batched/{s}/{size[s]}"]), a, spread(pooled[f"one_at_a_time/{s}/{size[s]}"]),
                      a / b, batched_i[s], alone[s][0], b / direct_ns, batched_i[s] / batched_i["direct"], alone[s][1],
                      floor / b if size[s] == 1000000 else "", differ(speedup, s), differ(ns_ratio, s)]
-                    + ([counterpart[s], public_ratio(pooled_table, s, counterpart[s]),
-                        public_ratio(pooled_table, s, counterpart[s], "one_at_a_time"), differ(public_ratio, s, counterpart[s])]
+                    + ([counterpart[s], public_ratio(pooled, s, counterpart[s]),
+                        public_ratio(pooled, s, counterpart[s], "one_at_a_time"), differ(public_ratio, s, counterpart[s])]
                        if s in counterpart else ["", "", "", ""]) + [mode])
     fd, temporary = tempfile.mkstemp(dir=args.out, prefix=".cost.csv.")  # beside the target: os.replace is atomic
     try:
