@@ -63,20 +63,18 @@ public:
     // The spheres lie on the body x axis, so one rotation of that axis places all five:
     // this runs at every step, and five quaternion rotations would be most of it.
     void evaluate_forces(Bodies& b, double) const override {
+        const Vec3 axis = fibre_axis(b);
         const double centre_z = b.position[0].z();
         Vec3 force(0.0, 0.0, -mass_ * gravity_), torque = Vec3::Zero();
-        if (may_touch_floor(centre_z)) {
-            const Vec3 axis = fibre_axis(b);
-            if (touches_floor(centre_z, axis.z())) {
-                for (const double offset : offsets_) {
-                    const double overlap = radius_ - (centre_z + offset * axis.z());
-                    if (overlap <= 0.0) continue;
-                    const Vec3 arm = offset * axis;
-                    // Hertz: F = 4/3 E* sqrt(R) delta^(3/2), normal to the floor.
-                    const Vec3 contact(0.0, 0.0, 4.0 / 3.0 * effective_modulus_ * std::sqrt(radius_) * overlap * std::sqrt(overlap));
-                    force += contact;
-                    torque += arm.cross(contact);
-                }
+        if (touches_floor(centre_z, axis.z())) {
+            for (const double offset : offsets_) {
+                const double overlap = radius_ - (centre_z + offset * axis.z());
+                if (overlap <= 0.0) continue;
+                const Vec3 arm = offset * axis;
+                // Hertz: F = 4/3 E* sqrt(R) delta^(3/2), normal to the floor.
+                const Vec3 contact(0.0, 0.0, 4.0 / 3.0 * effective_modulus_ * std::sqrt(radius_) * overlap * std::sqrt(overlap));
+                force += contact;
+                torque += arm.cross(contact);
             }
         }
         b.force.set(0, force);
@@ -123,15 +121,10 @@ private:
     bool touches_floor(double centre_z, double axis_z) const {
         return radius_ - (centre_z - std::abs(offsets_.back() * axis_z)) > 0.0;
     }
-    // False when the centre is so high that no sphere can reach the floor whatever the axis
-    // (|axis_z| <= 1, and a 1 % margin covers its round-off): then touches_floor is false too,
-    // and the axis (a division and a dozen products) need not be computed. Most of a run.
-    bool may_touch_floor(double centre_z) const { return centre_z - radius_ <= 1.01 * std::abs(offsets_.back()); }
     double potential(const Bodies& b) const { return mass_ * gravity_ * b.position[0].z(); }
     double elastic(const Bodies& b) const {  // Hertz potential: 8/15 E* sqrt(R) delta^(5/2)
-        double e = 0.0;
-        if (!may_touch_floor(b.position[0].z())) return e;
         const double axis_z = fibre_axis(b).z();
+        double e = 0.0;
         if (!touches_floor(b.position[0].z(), axis_z)) return e;
         for (const double offset : offsets_) {
             const double overlap = radius_ - (b.position[0].z() + offset * axis_z);
