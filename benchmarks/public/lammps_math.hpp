@@ -5,6 +5,8 @@
 // code: the same operations in the same order, as read in its sources.
 #pragma once
 
+#include "schemes/scheme.hpp"
+
 #include <cmath>
 
 namespace rotbench::lammps_style {
@@ -12,6 +14,12 @@ namespace rotbench::lammps_style {
 struct Axes {
     double ex[3], ey[3], ez[3];  // body axes in the world: the columns of R(q)
 };
+
+// A body's orientation and principal moments as LAMMPS's arrays hold them.
+inline void unpack(const RigidBody& b, double q[4], double inertia[3]) {
+    q[0] = b.q.w(), q[1] = b.q.x(), q[2] = b.q.y(), q[3] = b.q.z();
+    inertia[0] = b.inertia.x(), inertia[1] = b.inertia.y(), inertia[2] = b.inertia.z();
+}
 
 inline void normalise(double q[4]) {
     const double s = 1.0 / std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);

@@ -3,7 +3,6 @@
 // and cos, torque kicks on p), written anew for the cost table's side-by-side comparison
 // with rotbench's `no_squish`. The same map in exact arithmetic.
 #include "benchmarks/public/lammps_math.hpp"
-#include "schemes/scheme.hpp"
 
 namespace rotbench {
 namespace {
@@ -53,11 +52,6 @@ struct NoSquishLammps {
         double f[4];
         quaternion_times_vector(q, tb, f);
         for (int i = 0; i < 4; ++i) p[i] += dt * f[i];
-    }
-
-    static void unpack(const RigidBody& b, double q[4], double inertia[3]) {
-        q[0] = b.q.w(), q[1] = b.q.x(), q[2] = b.q.y(), q[3] = b.q.z();
-        inertia[0] = b.inertia.x(), inertia[1] = b.inertia.y(), inertia[2] = b.inertia.z();
     }
 
     static void start(const RigidBody& b, Memory& m) {

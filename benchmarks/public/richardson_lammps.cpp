@@ -3,7 +3,6 @@
 // the cost table's side-by-side comparison with rotbench's `richardson`. The same map in
 // exact arithmetic; the counterpart is named by the id, `<scheme>__<code>`.
 #include "benchmarks/public/lammps_math.hpp"
-#include "schemes/scheme.hpp"
 
 namespace rotbench {
 namespace {
@@ -16,14 +15,9 @@ struct RichardsonLammps {
         Axes axes;         // of q^n, kept from the end of the previous step, as fix rigid does
     };
 
-    static void load(const RigidBody& b, double q[4], double inertia[3]) {
-        q[0] = b.q.w(), q[1] = b.q.x(), q[2] = b.q.y(), q[3] = b.q.z();
-        inertia[0] = b.inertia.x(), inertia[1] = b.inertia.y(), inertia[2] = b.inertia.z();
-    }
-
     static void start(const RigidBody& b, Memory& m) {
         double q[4], inertia[3];
-        load(b, q, inertia);
+        unpack(b, q, inertia);
         normalise(q);
         m.axes = axes_of(q);
         const double w[3] = {b.omega.x(), b.omega.y(), b.omega.z()};
@@ -32,7 +26,7 @@ struct RichardsonLammps {
 
     static void predict(RigidBody& b, Memory& m, double dt) {
         double q[4], inertia[3], w[3], wq[4], full[4], half[4];
-        load(b, q, inertia);
+        unpack(b, q, inertia);
         for (int i = 0; i < 3; ++i) m.angmom[i] += 0.5 * dt * b.torque[i];
         omega_from_momentum(m.angmom, m.axes, inertia, w);
         const double dtq = 0.5 * dt;
@@ -54,8 +48,8 @@ struct RichardsonLammps {
     }
 
     static void correct(RigidBody& b, Memory& m, double dt) {
-        double inertia[3], w[3];
-        inertia[0] = b.inertia.x(), inertia[1] = b.inertia.y(), inertia[2] = b.inertia.z();
+        const double inertia[3] = {b.inertia.x(), b.inertia.y(), b.inertia.z()};  // q is not needed here
+        double w[3];
         for (int i = 0; i < 3; ++i) m.angmom[i] += 0.5 * dt * b.torque[i];
         omega_from_momentum(m.angmom, m.axes, inertia, w);
         b.omega = Vec3(w[0], w[1], w[2]);
