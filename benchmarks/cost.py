@@ -133,29 +133,28 @@ def count_instructions(driver, plugin_args, scheme, sizes, tmp):
     return result
 
 
-def bench_table(bench, plugin_args, names, processes, repetitions, progress, stage):
-    """name -> its repetitions (ns per body-step), pooled over the processes."""
+def bench_table(bench, plugin_args, names, repetitions, progress, stage):
+    """One benchmark process: name -> its repetitions (ns per body-step)."""
     pattern = "^(" + "|".join(re.escape(n) for n in names) + ")$"
-    found, expected, done, started = {}, len(names) * repetitions * processes, 0, time.monotonic()
-    for _ in range(processes):
-        command = [bench, *plugin_args, f"--benchmark_filter={pattern}", "--benchmark_min_time=0.02",
-                   f"--benchmark_repetitions={repetitions}", "--benchmark_enable_random_interleaving=true",
-                   "--benchmark_report_aggregates_only=false", "--benchmark_format=csv"]
-        with subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True) as p:
-            header = None
-            for line in p.stdout:
-                if line.startswith("name,"):
-                    header = line
-                    continue
-                if header is None:
-                    continue
-                row = next(csv.DictReader(io.StringIO(header + line)))
-                if row["name"] in names:  # not an aggregate (_mean, _median, ...): those are recomputed here
-                    found.setdefault(row["name"], []).append(float(row["ns_per_body_step"]))
-                    done += 1
-                    progress.show(stage, done, expected, row["name"], started)
-        if p.returncode != 0:
-            fail(f"{os.path.basename(bench)} failed with exit {p.returncode}")
+    found, expected, done, started = {}, len(names) * repetitions, 0, time.monotonic()
+    command = [bench, *plugin_args, f"--benchmark_filter={pattern}", "--benchmark_min_time=0.02",
+               f"--benchmark_repetitions={repetitions}", "--benchmark_enable_random_interleaving=true",
+               "--benchmark_report_aggregates_only=false", "--benchmark_format=csv"]
+    with subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True) as p:
+        header = None
+        for line in p.stdout:
+            if line.startswith("name,"):
+                header = line
+                continue
+            if header is None:
+                continue
+            row = next(csv.DictReader(io.StringIO(header + line)))
+            if row["name"] in names:  # not an aggregate (_mean, _median, ...): those are recomputed here
+                found.setdefault(row["name"], []).append(float(row["ns_per_body_step"]))
+                done += 1
+                progress.show(stage, done, expected, row["name"], started)
+    if p.returncode != 0:
+        fail(f"{os.path.basename(bench)} failed with exit {p.returncode}")
     missing = [n for n in names if n not in found]
     if missing:
         fail(f"the benchmark did not report {', '.join(missing)}")
@@ -205,13 +204,13 @@ def main():
     if args.thorough:
         halves = [{}, {}]
         for k in range(10):
-            part = bench_table(bench, plugin_args, names, 1, 3, progress, f"timing, process {k + 1} of 10,")
+            part = bench_table(bench, plugin_args, names, 3, progress, f"timing, process {k + 1} of 10,")
             for name, values in part.items():
                 halves[k % 2].setdefault(name, []).extend(values)
         tables = halves
     else:
         for k in range(2):
-            tables.append(bench_table(bench, plugin_args, names, 1, 2, progress, f"timing, table {k + 1} of 2,"))
+            tables.append(bench_table(bench, plugin_args, names, 2, progress, f"timing, table {k + 1} of 2,"))
     pooled = {n: tables[0][n] + tables[1][n] for n in names}
 
     def least(table, kind, s):

@@ -13,8 +13,6 @@
 #include "reports/stability_report.hpp"
 #include "schemes/scheme.hpp"
 
-#include <optional>
-
 namespace rotbench {
 namespace {
 
@@ -39,12 +37,13 @@ public:
         check_stability_scenes(scenes);
         const OutputDir dir = OutputDir::open(out_, {"stability", "stability.csv", {"stability.csv", "stability_spin.csv", "stability.md"},
                                                      overwrite_});
-        // Every case weighs the same: each searches its limit over about as many steps.
-        std::optional<Progress> progress;
-        progress.emplace(how.err, Progress::mode_for(how.err, quiet_), "stability",
-                         std::vector<double>(stability_case_count(scenes, schemes, zetas, omegas), 1.0));
-        const auto rows = stability_study(scenes, schemes, zetas, omegas, jobs_, &*progress);
-        progress.reset();  // the status line cleared before the last line
+        std::vector<StabilityRow> rows;
+        {  // the progress's status line is cleared when it goes, before the last line
+            // Every case weighs the same: each searches its limit over about as many steps.
+            Progress progress(how.err, Progress::mode_for(how.err, quiet_), "stability",
+                              std::vector<double>(stability_case_count(scenes, schemes, zetas, omegas), 1.0));
+            rows = stability_study(scenes, schemes, zetas, omegas, jobs_, &progress);
+        }
         dir.write("stability.csv", stability_csv(rows));
         dir.write("stability_spin.csv", stability_spin_csv(rows));
         ResultSet families;  // the schemes' families, for the plots' panels
