@@ -1,38 +1,16 @@
 // The closed-form free rigid body, verified against Boost.Odeint on the same equations
-// (Euler's equations and q' = q w'/2), integrated in long double (eps ~ 1e-19) at
-// tolerance 1e-18 so that the integrator's own error is far below the targets checked.
-// GCC 12 reports Odeint's stepper copy constructor as reading uninitialised buffers
-// (a false positive; the buffers are resized before use).
-#pragma GCC diagnostic ignored "-Wuninitialized"
-#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+// (tests/odeint_free_body.hpp).
 #include "schemes/detail/free_rigid_body.hpp"
 #include "schemes/quaternion.hpp"
+#include "tests/odeint_free_body.hpp"
 
-#include <array>
-#include <boost/numeric/odeint.hpp>
 #include <catch2/catch.hpp>
 
 using namespace rotbench;
+using namespace rotbench::testing;
 namespace odeint = boost::numeric::odeint;
 
 namespace {
-
-using Real = long double;
-using OdeState = std::array<Real, 7>;  // w'1, w'2, w'3, qw, qx, qy, qz
-
-struct EulerEquations {
-    std::array<Real, 3> I;
-    void operator()(const OdeState& s, OdeState& d, Real) const {
-        const Real w0 = s[0], w1 = s[1], w2 = s[2], qw = s[3], qx = s[4], qy = s[5], qz = s[6];
-        d[0] = (I[1] - I[2]) / I[0] * w1 * w2;
-        d[1] = (I[2] - I[0]) / I[1] * w2 * w0;
-        d[2] = (I[0] - I[1]) / I[2] * w0 * w1;
-        d[3] = 0.5L * (-qx * w0 - qy * w1 - qz * w2);  // q (0, w') / 2
-        d[4] = 0.5L * (qw * w0 + qy * w2 - qz * w1);
-        d[5] = 0.5L * (qw * w1 + qz * w0 - qx * w2);
-        d[6] = 0.5L * (qw * w2 + qx * w1 - qy * w0);
-    }
-};
 
 struct Deviation {
     double omega_relative = 0, angle = 0;
@@ -41,7 +19,7 @@ struct Deviation {
 Deviation against_odeint(const Vec3& inertia, const Quat& q0, const Vec3& w0, double t_end, int samples = 200) {
     const FreeRigidBody exact(inertia, q0, w0);
     OdeState s{w0.x(), w0.y(), w0.z(), q0.w(), q0.x(), q0.y(), q0.z()};
-    auto stepper = odeint::make_controlled<odeint::runge_kutta_fehlberg78<OdeState, Real>>(1e-18L, 1e-18L);
+    auto stepper = odeint_stepper();
     std::vector<Real> times;
     for (int k = 0; k <= samples; ++k) times.push_back(static_cast<Real>(t_end) * k / samples);
     Deviation d;
