@@ -23,4 +23,15 @@ inline Bodies random_bodies(std::size_t n) {
     return b;
 }
 
+// Body i of `from` as a scene of one body (the rest of its state from random_bodies(1)): how
+// the tests step a body alone to compare it with the same body stepped in a batch.
+inline Bodies body_alone(const Bodies& from, std::size_t i) {
+    Bodies one = random_bodies(1);
+    one.inertia.set(0, from.inertia[i]);
+    one.orientation.set(0, from.orientation[i]);
+    one.omega.set(0, from.omega[i]);
+    one.torque.set(0, from.torque[i]);
+    return one;
+}
+
 }  // namespace rotbench

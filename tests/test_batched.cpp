@@ -36,11 +36,7 @@ std::pair<double, double> batch_minus_alone(const std::string& id, double dt, in
     double omega_diff = 0, q_diff = 0;
     bool all_ok = true;
     for (std::size_t i = 0; i < n; ++i) {
-        Bodies one = random_bodies(1);
-        one.inertia.set(0, initial.inertia[i]);
-        one.orientation.set(0, initial.orientation[i]);
-        one.omega.set(0, initial.omega[i]);
-        one.torque.set(0, initial.torque[i]);
+        Bodies one = body_alone(initial, i);
         if (!step(id, one, dt, steps)) {
             all_ok = false;
             continue;

@@ -136,11 +136,7 @@ TEST_CASE("exact_splitting: a pack whose bodies take the series and the closed f
     };
     stepped(batch);
     for (std::size_t i = 0; i < n; ++i) {
-        Bodies one = random_bodies(1);
-        one.inertia.set(0, initial.inertia[i]);
-        one.orientation.set(0, initial.orientation[i]);
-        one.omega.set(0, initial.omega[i]);
-        one.torque.set(0, initial.torque[i]);
+        Bodies one = body_alone(initial, i);
         stepped(one);
         CHECK(batch.orientation[i].coeffs() == one.orientation[0].coeffs());
         CHECK(batch.omega[i] == one.omega[0]);
