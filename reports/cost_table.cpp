@@ -110,8 +110,9 @@ std::string cost_section(const std::filesystem::path& dir) {
     if (!against.empty())
         md += "\n*Against public codes*: each scheme beside the same algorithm as a public DEM or MD code computes it (its "
               "arithmetic read in that code's sources and written anew as the plug-in `rotbench_public_counterparts`, id "
-              "`<scheme>__<code>`, built with the same flags and timed in the same runs): the counterpart's time over the "
-              "scheme's, batched at the table's size and one body at a time; above 1, rotbench's scheme is faster. *Tables "
+              "`<scheme>__<code>`, built with the same flags and timed in the same runs; of several, the fastest one body at a "
+              "time): the counterpart's time over the scheme's, batched at the table's size and one body at a time; above 1, "
+              "rotbench's scheme is faster. *Tables "
               "differ*: how much the batched ratio differs between the two tables.\n\n"
               "| scheme | compared with | batched: public / rotbench | one at a time: public / rotbench | tables differ |\n"
               "|---|---|--:|--:|--:|\n" + against;

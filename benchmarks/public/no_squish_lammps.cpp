@@ -3,23 +3,18 @@
 // and cos, torque kicks on p), written anew for the cost table's side-by-side comparison
 // with rotbench's `no_squish`. The same map in exact arithmetic.
 #include "benchmarks/public/lammps_math.hpp"
+#include "benchmarks/public/no_squish_common.hpp"
 
 namespace rotbench {
 namespace {
 
 using namespace lammps_style;
+using public_codes::permute;
 
 struct NoSquishLammps {
     struct Memory {
         double p[4];  // conjugate quaternion momentum
     };
-
-    // P_k q of Miller et al. (k = 1, 2, 3: the body axes).
-    static void permute(int k, const double q[4], double out[4]) {
-        if (k == 1) out[0] = -q[1], out[1] = q[0], out[2] = q[3], out[3] = -q[2];
-        else if (k == 2) out[0] = -q[2], out[1] = -q[3], out[2] = q[0], out[3] = q[1];
-        else out[0] = -q[3], out[1] = q[2], out[2] = -q[1], out[3] = q[0];
-    }
 
     static void free_rotor(int k, double p[4], double q[4], const double inertia[3], double h) {
         double kp[4], kq[4];
@@ -92,11 +87,7 @@ const RegisterScheme<NoSquishLammps> registration(
     "LAMMPS src/math_extra.cpp MathExtra::no_squish_rotate and src/RIGID/fix_rigid_nve.cpp, read and written anew",
     "Kick of the quaternion momentum p with q (0, T'); free rotors 3, 2, 1, 2, 3 over dt/2, dt/2, dt, dt/2, dt/2 "
     "with libm's sin and cos; kick. For the cost table only.",
-    {.without_torque = {2, "the same map as no_squish"},
-     .with_torque = {2, "the same map as no_squish"},
-     .conserves_momentum = true,
-     .bounded_energy = true,
-     .time_reversible = true});
+    public_codes::no_squish_claims());
 
 }  // namespace
 }  // namespace rotbench
