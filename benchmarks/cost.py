@@ -134,6 +134,20 @@ def count_instructions(driver, plugin_args, scheme, sizes, tmp):
     return result
 
 
+def best_counterparts(schemes, ns_alone):
+    """Each scheme's public counterpart `<scheme>__<code>`; of several (NO_SQUISH: LAMMPS and
+    HOOMD-blue), the best: the least time one body at a time, as those codes step their bodies.
+
+    >>> best_counterparts(["a", "a__x", "a__y", "b", "c__z"], {"a": 1, "a__x": 3, "a__y": 2, "b": 1, "c__z": 1})
+    {'a': 'a__y'}
+    """
+    groups = {}
+    for p in schemes:
+        if "__" in p and p.split("__")[0] in schemes:
+            groups.setdefault(p.split("__")[0], []).append(p)
+    return {s: min(ps, key=lambda p: ns_alone[p]) for s, ps in groups.items()}
+
+
 def bench_table(bench, plugin_args, names, repetitions, progress, stage):
     """One benchmark process: name -> its repetitions (ns per body-step)."""
     pattern = "^(" + "|".join(re.escape(n) for n in names) + ")$"
@@ -229,13 +243,7 @@ def main():
     def public_ratio(table, s, p, kind="batched"):
         return least(table, kind, p) / least(table, kind, s)
 
-    # A scheme with several public counterparts (NO_SQUISH: LAMMPS and HOOMD-blue) is held to
-    # the best of them: the least time one body at a time, as those codes step their bodies.
-    counterparts = {}
-    for p in schemes:
-        if "__" in p and p.split("__")[0] in schemes:
-            counterparts.setdefault(p.split("__")[0], []).append(p)
-    counterpart = {s: min(ps, key=lambda p: min(pooled[f"one_at_a_time/{p}/{size[p]}"])) for s, ps in counterparts.items()}
+    counterpart = best_counterparts(schemes, {s: min(pooled[f"one_at_a_time/{s}/{size[s]}"]) for s in schemes})
 
     def spread(values):
         return (max(values) - min(values)) / min(values)
