@@ -1,7 +1,7 @@
 // The cost table's public-code counterparts (benchmarks/public) compute the same map as the
 // schemes they are timed against, so that the ratio compares two implementations of one
-// algorithm, not two algorithms. Yade's Fincham is another reading of the rule and is only
-// timed (it claims nothing), so it is left out of this run.
+// algorithm, not two algorithms. Yade's Fincham, Omelyan and SPIRAL steps are leapfrog readings
+// of those rules, other maps, and are only timed (they claim nothing): left out of this run.
 #include "tests/cli_helpers.hpp"
 
 #include <catch2/catch.hpp>

@@ -5,16 +5,12 @@
 // rotbench's `fincham`. Taking the half step's w' in the frame of q^n is Yade's own reading
 // of Fincham's rule, not the textbook one: the errors differ from `fincham`'s, so it claims
 // no order; only its cost is compared.
-#include "schemes/scheme.hpp"
+#include "benchmarks/public/yade_math.hpp"
 
 namespace rotbench {
 namespace {
 
-// dq/dt = 1/2 q (0, w') for the body-frame angular velocity w'.
-Quat rate(const Vec3& omega_body, const Quat& q) {
-    const Quat d = q * Quat(0.0, omega_body.x(), omega_body.y(), omega_body.z());
-    return Quat(0.5 * d.coeffs());
-}
+using yade_style::rate;
 
 struct FinchamYade {
     struct Memory {
