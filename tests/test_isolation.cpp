@@ -52,9 +52,12 @@ TEST_CASE("isolation: a plug-in that crashes, exits, hangs or eats memory fails 
     // scheme that eats memory would eat the machine's; and ASan turns a SIGSEGV into its
     // report and exit status 1.
     const bool asan = !memory_limit_enforced();
+    // --run-timeout 6: long enough that a worker filling its 256 MB still ends on its own on a
+    // machine loaded twice over (at 2 s, bad_oom was reported as a timeout with four busy
+    // loops beside the test on 2 cores), short enough for bad_hang's wait.
     const Cli r = cli({"run", "--plugin", PLUGIN_CRASHING, "--scenes", "asymmetric_free", "--dt", "0.05", "--schemes",
                        std::string("bad_segfault,bad_abort,bad_exit,bad_throw42,bad_hang,") + (asan ? "" : "bad_oom,") + "direct",
-                       "--run-timeout", "2", "--run-memory", "256", "--jobs", "2", "--out", dir.string()});
+                       "--run-timeout", "6", "--run-memory", "256", "--jobs", "2", "--out", dir.string()});
     INFO(r.err);
     REQUIRE(r.status == 0);
     const auto failed = failures(dir);
@@ -63,7 +66,7 @@ TEST_CASE("isolation: a plug-in that crashes, exits, hangs or eats memory fails 
     CHECK_THAT(failed.at("bad_abort"), Catch::Contains("crashed: signal 6 (Aborted)"));
     CHECK_THAT(failed.at("bad_exit"), Catch::Equals("its worker exited with status 7 without a result"));
     CHECK_THAT(failed.at("bad_throw42"), Catch::Contains("threw an exception that is not a std::exception"));
-    CHECK_THAT(failed.at("bad_hang"), Catch::Contains("exceeded the run time limit of 2 s (--run-timeout)"));
+    CHECK_THAT(failed.at("bad_hang"), Catch::Contains("exceeded the run time limit of 6 s (--run-timeout)"));
     if (!asan) CHECK_THAT(failed.at("bad_oom"), Catch::Contains("std::bad_alloc (its worker's memory is limited to 256 MB, --run-memory)"));
     CHECK(failed.at("direct").empty());  // the built-in scheme beside them ran
     CHECK_THAT(read(dir / "report.md"), Catch::Contains("bad_segfault"));
