@@ -5,26 +5,15 @@
 // code: the same operations in the same order, as read in its sources.
 #pragma once
 
-#include "schemes/scheme.hpp"
-
-#include <cmath>
+#include "benchmarks/public/plain_arrays.hpp"
 
 namespace rotbench::lammps_style {
+
+using public_codes::dot3, public_codes::normalise, public_codes::unpack;
 
 struct Axes {
     double ex[3], ey[3], ez[3];  // body axes in the world: the columns of R(q)
 };
-
-// A body's orientation and principal moments as LAMMPS's arrays hold them.
-inline void unpack(const RigidBody& b, double q[4], double inertia[3]) {
-    q[0] = b.q.w(), q[1] = b.q.x(), q[2] = b.q.y(), q[3] = b.q.z();
-    inertia[0] = b.inertia.x(), inertia[1] = b.inertia.y(), inertia[2] = b.inertia.z();
-}
-
-inline void normalise(double q[4]) {
-    const double s = 1.0 / std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
-    for (int i = 0; i < 4; ++i) q[i] *= s;
-}
 
 // R(q) of a unit quaternion (w, x, y, z), column by column.
 inline Axes axes_of(const double q[4]) {
@@ -40,8 +29,6 @@ inline Axes axes_of(const double q[4]) {
     a.ez[2] = q[0] * q[0] - q[1] * q[1] - q[2] * q[2] + q[3] * q[3];
     return a;
 }
-
-inline double dot3(const double a[3], const double b[3]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
 // w = R diag(1/I) R^T m: the world angular velocity of world angular momentum m.
 inline void omega_from_momentum(const double m[3], const Axes& a, const double inertia[3], double w[3]) {

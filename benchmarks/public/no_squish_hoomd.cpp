@@ -7,18 +7,16 @@
 // on the orientation only); the harness's force model needs one, so w is taken from p as
 // HOOMD's thermodynamics does: L' = 1/2 vec(q* p), w = q (L'/I) q*.
 #include "benchmarks/public/no_squish_common.hpp"
-#include "schemes/scheme.hpp"
+#include "benchmarks/public/plain_arrays.hpp"
 
 #include <cmath>
 
 namespace rotbench {
 namespace {
 
-using public_codes::permute;
+using public_codes::dot3, public_codes::normalise, public_codes::permute, public_codes::unpack;
 
 // HOOMD's vec3 and quat arithmetic (VectorMath.h) on plain arrays: q = (s, v) as w, x, y, z.
-double dot3(const double a[3], const double b[3]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-
 // rotate(q, a) = (s^2 - v.v) a + 2 s (v x a) + 2 (v.a) v; `sign` -1 rotates by conj(q).
 void rotate(const double q[4], double sign, const double a[3], double out[3]) {
     const double s = q[0], v[3] = {sign * q[1], sign * q[2], sign * q[3]};
@@ -40,11 +38,6 @@ struct NoSquishHoomd {
     struct Memory {
         double p[4];  // conjugate quaternion momentum, 2 q (0, L')
     };
-
-    static void unpack(const RigidBody& b, double q[4], double inertia[3]) {
-        q[0] = b.q.w(), q[1] = b.q.x(), q[2] = b.q.y(), q[3] = b.q.z();
-        inertia[0] = b.inertia.x(), inertia[1] = b.inertia.y(), inertia[2] = b.inertia.z();
-    }
 
     // p += dt q (0, T'), with T' = rotate(conj(q), T) and no torque about an axis of zero moment.
     // (HOOMD compares the moments with its EPSILON in reduced units; 0 here, so that bodies in
@@ -87,8 +80,7 @@ struct NoSquishHoomd {
     static void start(const RigidBody& b, Memory& m) {
         double q[4], inertia[3];
         unpack(b, q, inertia);
-        const double n = 1.0 / std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
-        for (double& x : q) x *= n;
+        normalise(q);
         const double w_world[3] = {b.omega.x(), b.omega.y(), b.omega.z()};
         double w[3];
         rotate(q, -1.0, w_world, w);
@@ -106,8 +98,7 @@ struct NoSquishHoomd {
         rotor(1, m.p, q, inertia, dt);
         rotor(2, m.p, q, inertia, 0.5 * dt);
         rotor(3, m.p, q, inertia, 0.5 * dt);
-        const double n = 1.0 / std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);  // "renormalize"
-        for (double& x : q) x *= n;
+        normalise(q);  // HOOMD's "renormalize", once per step
         b.q = Quat(q[0], q[1], q[2], q[3]);
         b.omega = omega(q, m.p, inertia);
     }

@@ -18,7 +18,7 @@ struct OmelyanYade {
 
     using Memory = LeapfrogMemory;
 
-    static void start(const RigidBody&, Memory& m) { m.steps = 0; }
+    static void start(const RigidBody&, Memory&) {}  // a fresh memory counts from step 0
 
     static void predict(RigidBody& b, Memory& m, double dt) {
         const Eigen::Matrix3d A = b.q.conjugate().toRotationMatrix();  // global to local

@@ -24,7 +24,7 @@ Vec3 w_dot(const Vec3& w, const Vec3& M, const Vec3& I) {
 struct SpiralYade {
     using Memory = LeapfrogMemory;
 
-    static void start(const RigidBody&, Memory& m) { m.steps = 0; }
+    static void start(const RigidBody&, Memory&) {}  // a fresh memory counts from step 0
 
     static void predict(RigidBody& b, Memory& m, double dt) {
         const Eigen::Matrix3d A = b.q.conjugate().toRotationMatrix();  // global to local
