@@ -52,9 +52,8 @@ TEST_CASE("isolation: a plug-in that crashes, exits, hangs or eats memory fails 
     // scheme that eats memory would eat the machine's; and ASan turns a SIGSEGV into its
     // report and exit status 1.
     const bool asan = !memory_limit_enforced();
-    // --run-timeout 6: long enough that a worker filling its 256 MB still ends on its own on a
-    // machine loaded twice over (at 2 s, bad_oom was reported as a timeout with four busy
-    // loops beside the test on 2 cores), short enough for bad_hang's wait.
+    // --run-timeout 6: long enough for the worker filling its 256 MB to end on its own on a
+    // loaded machine (2 s was not), short enough for bad_hang's wait.
     const Cli r = cli({"run", "--plugin", PLUGIN_CRASHING, "--scenes", "asymmetric_free", "--dt", "0.05", "--schemes",
                        std::string("bad_segfault,bad_abort,bad_exit,bad_throw42,bad_hang,") + (asan ? "" : "bad_oom,") + "direct",
                        "--run-timeout", "6", "--run-memory", "256", "--jobs", "2", "--out", dir.string()});
