@@ -1,0 +1,145 @@
+#include "harness/granular/cluster_system.hpp"
+
+#include "schemes/quaternion.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace rotbench {
+
+ClusterSystem::ClusterSystem(std::vector<ClusterShape> shapes, const ContactMaterial& material, double friction,
+                             const Vec3& gravity)
+    : shapes_(std::move(shapes)), law_(material), friction_(friction), gravity_(gravity) {
+    if (shapes_.empty()) throw std::invalid_argument("ClusterSystem: no shapes");
+    for (const ClusterShape& s : shapes_)
+        for (const Sphere& sphere : s.spheres) largest_radius_ = std::max(largest_radius_, sphere.radius);
+}
+
+Bodies ClusterSystem::make_bodies(const std::vector<int>& shape_of, const std::vector<Vec3>& positions,
+                                  const std::vector<Quat>& orientations) {
+    if (positions.size() != shape_of.size() || orientations.size() != shape_of.size())
+        throw std::invalid_argument("ClusterSystem::make_bodies: one shape, position and orientation per body");
+    shape_of_ = shape_of;
+    first_sphere_.clear();
+    Bodies b;
+    b.resize(shape_of.size());
+    std::size_t spheres = 0;
+    for (std::size_t i = 0; i < shape_of.size(); ++i) {
+        const ClusterShape& shape = shapes_.at(static_cast<std::size_t>(shape_of[i]));
+        b.mass[i] = shape.mass;
+        b.inertia.set(i, shape.inertia);
+        b.position.set(i, positions[i]);
+        b.orientation.set(i, orientations[i]);
+        first_sphere_.push_back(spheres);
+        spheres += shape.spheres.size();
+    }
+    springs_.clear();
+    last_time_ = NAN;
+    return b;
+}
+
+std::vector<Sphere> ClusterSystem::world_spheres(const Bodies& b) const {
+    std::vector<Sphere> out;
+    for (std::size_t i = 0; i < b.size(); ++i) {
+        const Eigen::Matrix3d rotation = b.orientation[i].normalized().toRotationMatrix();
+        const Vec3 x = b.position[i];
+        for (const Sphere& s : shapes_[static_cast<std::size_t>(shape_of_[i])].spheres) out.push_back({x + rotation * s.centre, s.radius});
+    }
+    return out;
+}
+
+double ClusterSystem::potential_energy(const Bodies& b) const {
+    double e = 0.0;
+    for (std::size_t i = 0; i < b.size(); ++i) e -= b.mass[i] * gravity_.dot(b.position[i]);
+    return e;
+}
+
+void ClusterSystem::evaluate(Bodies& b, double t) const {
+    // The springs' clock: a steady step follows on; anything else (the first evaluation, a step
+    // more than half as long again as the last, time going back) starts the springs afresh.
+    double elapsed = t - last_time_;
+    if (!(elapsed > 0.0) || (last_step_ > 0.0 && elapsed > 1.5 * last_step_)) {
+        springs_.clear();
+        elapsed = 0.0;
+        last_step_ = 0.0;
+    } else {
+        last_step_ = elapsed;
+    }
+    last_time_ = t;
+
+    centres_.clear();
+    radii_.clear();
+    owner_.clear();
+    for (std::size_t i = 0; i < b.size(); ++i) {
+        const Eigen::Matrix3d rotation = b.orientation[i].normalized().toRotationMatrix();
+        const Vec3 x = b.position[i];
+        for (const Sphere& s : shapes_[static_cast<std::size_t>(shape_of_[i])].spheres) {
+            centres_.push_back(x + rotation * s.centre);
+            radii_.push_back(s.radius);
+            owner_.push_back(i);
+        }
+        b.force.set(i, b.mass[i] * gravity_);
+        b.torque.set(i, Vec3::Zero());
+    }
+    wall_loads_.assign(walls.size(), Vec3::Zero());
+    elastic_energy_ = 0.0;
+    next_springs_.clear();
+
+    const std::uint64_t sphere_count = centres_.size();
+    auto point_velocity = [&](std::size_t body, const Vec3& point) {
+        return b.velocity[body] + b.omega[body].cross(point - b.position[body]);
+    };
+    auto apply = [&](std::size_t body, const Vec3& point, const Vec3& force) {
+        b.force.set(body, b.force[body] + force);
+        b.torque.set(body, b.torque[body] + (point - b.position[body]).cross(force));
+    };
+    auto spring_of = [&](std::uint64_t key) {
+        const auto found = springs_.find(key);
+        return found == springs_.end() ? Vec3::Zero().eval() : found->second;
+    };
+
+    cells_.build(centres_, 2.0 * largest_radius_);
+    cells_.for_each_pair([&](std::size_t i, std::size_t j) {
+        if (owner_[i] == owner_[j]) return;
+        const std::size_t a = std::min(i, j), c = std::max(i, j);  // the normal from the lower index
+        const Vec3 d = centres_[c] - centres_[a];
+        const double distance = d.norm(), overlap = radii_[a] + radii_[c] - distance;
+        if (!(overlap > 0.0) || distance == 0.0) return;
+        const Vec3 n = d / distance;
+        const Vec3 point = centres_[a] + (radii_[a] - 0.5 * overlap) * n;
+        const std::size_t body_a = owner_[a], body_c = owner_[c];
+        const Vec3 v = point_velocity(body_c, point) - point_velocity(body_a, point);
+        const double radius = radii_[a] * radii_[c] / (radii_[a] + radii_[c]);
+        const double mass = b.mass[body_a] * b.mass[body_c] / (b.mass[body_a] + b.mass[body_c]);
+        const std::uint64_t key = (static_cast<std::uint64_t>(a) << 32) | c;
+        Vec3 spring = spring_of(key);
+        const Vec3 f = law_.force(overlap, n, v, radius, mass, spring, elapsed, friction_);
+        next_springs_[key] = spring;
+        apply(body_c, point, f);
+        apply(body_a, point, -f);
+        elastic_energy_ += law_.normal_energy(overlap, radius);
+    });
+
+    for (std::size_t s = 0; s < centres_.size(); ++s) {
+        for (std::size_t w = 0; w < walls.size(); ++w) {
+            const Wall& wall = walls[w];
+            const double height = wall.normal.dot(centres_[s]) - wall.offset;
+            if (!(height > 0.0 && height < radii_[s])) continue;
+            if (!wall.region.contains(centres_[s]) || (wall.hole && wall.hole->contains(centres_[s]))) continue;
+            const double overlap = radii_[s] - height;
+            const Vec3 point = centres_[s] - (radii_[s] - 0.5 * overlap) * wall.normal;
+            const std::size_t body = owner_[s];
+            const Vec3 v = point_velocity(body, point) - wall.velocity;
+            const std::uint64_t key = (static_cast<std::uint64_t>(s) << 32) | (sphere_count + w);
+            Vec3 spring = spring_of(key);
+            const Vec3 f = law_.force(overlap, wall.normal, v, radii_[s], b.mass[body], spring, elapsed, wall.friction);
+            next_springs_[key] = spring;
+            apply(body, point, f);
+            wall_loads_[w] -= f;
+            elastic_energy_ += law_.normal_energy(overlap, radii_[s]);
+        }
+    }
+    springs_.swap(next_springs_);
+}
+
+}  // namespace rotbench
