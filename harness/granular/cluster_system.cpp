@@ -86,16 +86,16 @@ void ClusterSystem::evaluate(Bodies& b, double t) const {
     next_springs_.clear();
 
     const std::uint64_t sphere_count = centres_.size();
-    auto point_velocity = [&](std::size_t body, const Vec3& point) {
+    auto point_velocity = [&](std::size_t body, const Vec3& point) -> Vec3 {  // Vec3: not an expression of temporaries
         return b.velocity[body] + b.omega[body].cross(point - b.position[body]);
     };
     auto apply = [&](std::size_t body, const Vec3& point, const Vec3& force) {
         b.force.set(body, b.force[body] + force);
         b.torque.set(body, b.torque[body] + (point - b.position[body]).cross(force));
     };
-    auto spring_of = [&](std::uint64_t key) {
+    auto spring_of = [&](std::uint64_t key) -> Vec3 {
         const auto found = springs_.find(key);
-        return found == springs_.end() ? Vec3::Zero().eval() : found->second;
+        return found == springs_.end() ? Vec3::Zero() : found->second;
     };
 
     cells_.build(centres_, 2.0 * largest_radius_);
