@@ -217,3 +217,28 @@ TEST_CASE("granular contacts: two colliding clusters keep their momentum") {
     INFO("angular momentum change " << (total_angular_momentum(end) - l0).norm() / l0.norm());
     CHECK((total_angular_momentum(end) - l0).norm() < round_off * l_scale);
 }
+
+TEST_CASE("granular contacts: a sphere crossing the rim of a wall's opening feels no jump in force") {
+    const double R = 0.01;
+    ClusterSystem system({cluster_shape({{Vec3::Zero(), R}}, rho)}, ContactMaterial{}, 0.0, Vec3::Zero());
+    Wall bottom;
+    bottom.hole = Eigen::AlignedBox3d(Vec3(0.0, -1.0, -INFINITY), Vec3(1.0, 1.0, INFINITY));  // the opening: x in [0, 1]
+    system.walls.push_back(bottom);
+    auto force_at = [&](double x, double z) {
+        Bodies b = system.make_bodies({0}, {Vec3(x, 0.0, z)}, {Quat::Identity()});
+        system.evaluate(b, 0.0);
+        return b.force[0];
+    };
+    const double z = 0.6 * R;  // 0.4 R overlap with the plate
+    // Either side of the rim, 1e-9 m apart: the same force to the change of the overlap's
+    // geometry over that distance (relative 1e-9 / (0.4 R) ~ 3e-7, times 3/2 for Hertz).
+    const Vec3 outside = force_at(-1e-9, z), inside = force_at(1e-9, z);
+    CHECK(outside.z() > 0.0);
+    CHECK((outside - inside).norm() < 1e-6 * outside.norm());
+    // Well over the opening the rim pushes the sphere inwards and up, less than the plate did.
+    const Vec3 over = force_at(0.5 * R, z);
+    CHECK(over.x() > 0.0);
+    CHECK(over.z() > 0.0);
+    CHECK(over.norm() < outside.norm());
+    CHECK(force_at(2.0 * R, z).norm() == 0.0);  // clear of the rim: it falls through
+}

@@ -11,8 +11,7 @@ ClusterSystem::ClusterSystem(std::vector<ClusterShape> shapes, const ContactMate
                              const Vec3& gravity)
     : shapes_(std::move(shapes)), law_(material), friction_(friction), gravity_(gravity) {
     if (shapes_.empty()) throw std::invalid_argument("ClusterSystem: no shapes");
-    for (const ClusterShape& s : shapes_)
-        for (const Sphere& sphere : s.spheres) largest_radius_ = std::max(largest_radius_, sphere.radius);
+    for (const ClusterShape& s : shapes_) largest_reach_ = std::max(largest_reach_, s.reach);
 }
 
 Bodies ClusterSystem::make_bodies(const std::vector<int>& shape_of, const std::vector<Vec3>& positions,
@@ -98,9 +97,13 @@ void ClusterSystem::evaluate(Bodies& b, double t) const {
         return found == springs_.end() ? Vec3::Zero() : found->second;
     };
 
-    cells_.build(centres_, 2.0 * largest_radius_);
-    cells_.for_each_pair([&](std::size_t i, std::size_t j) {
-        if (owner_[i] == owner_[j]) return;
+    // Two levels: stones whose bounding spheres overlap (linked cells over the stones' centres),
+    // then their spheres. A cell of the largest sphere's size would hold dozens of the small
+    // ones, and a sphere-level search test ten times more pairs.
+    positions_.resize(b.size());
+    for (std::size_t i = 0; i < b.size(); ++i) positions_[i] = b.position[i];
+    cells_.build(positions_, 2.0 * largest_reach_);
+    auto sphere_pair = [&](std::size_t i, std::size_t j) {
         const std::size_t a = std::min(i, j), c = std::max(i, j);  // the normal from the lower index
         const Vec3 d = centres_[c] - centres_[a];
         const double distance = d.norm(), overlap = radii_[a] + radii_[c] - distance;
@@ -118,21 +121,53 @@ void ClusterSystem::evaluate(Bodies& b, double t) const {
         apply(body_c, point, f);
         apply(body_a, point, -f);
         elastic_energy_ += law_.normal_energy(overlap, radius);
+    };
+    cells_.for_each_pair([&](std::size_t p, std::size_t q) {
+        const double reach_p = reach_of(p), reach_q = reach_of(q);
+        if ((positions_[p] - positions_[q]).squaredNorm() >= (reach_p + reach_q) * (reach_p + reach_q)) return;
+        const std::size_t p_end = first_sphere_[p] + sphere_count_of(p), q_end = first_sphere_[q] + sphere_count_of(q);
+        for (std::size_t i = first_sphere_[p]; i < p_end; ++i) {
+            const double near = radii_[i] + reach_q;
+            if ((centres_[i] - positions_[q]).squaredNorm() >= near * near) continue;
+            for (std::size_t j = first_sphere_[q]; j < q_end; ++j) sphere_pair(i, j);
+        }
     });
 
     for (std::size_t s = 0; s < centres_.size(); ++s) {
         for (std::size_t w = 0; w < walls.size(); ++w) {
             const Wall& wall = walls[w];
+            if (!wall.region.contains(centres_[s])) continue;
             const double height = wall.normal.dot(centres_[s]) - wall.offset;
-            if (!(height > 0.0 && height < radii_[s])) continue;
-            if (!wall.region.contains(centres_[s]) || (wall.hole && wall.hole->contains(centres_[s]))) continue;
-            const double overlap = radii_[s] - height;
-            const Vec3 point = centres_[s] - (radii_[s] - 0.5 * overlap) * wall.normal;
+            Vec3 n = wall.normal;
+            double gap = height;
+            if (wall.hole && wall.hole->contains(centres_[s])) {
+                // Over the opening: the sphere meets the opening's rim, at the rim point nearest
+                // its centre, so that the force is continuous as the sphere crosses the rim.
+                if (!(std::abs(height) < radii_[s])) continue;
+                Vec3 rim = centres_[s] - height * wall.normal;
+                int axis = 0;
+                double nearest = INFINITY, edge = 0;
+                for (int k = 0; k < 3; ++k) {
+                    if (std::abs(wall.normal[k]) > 0.5) continue;  // the plane's own axis
+                    for (const double bound : {wall.hole->min()[k], wall.hole->max()[k]})
+                        if (std::abs(rim[k] - bound) < nearest) nearest = std::abs(rim[k] - bound), axis = k, edge = bound;
+                }
+                rim[axis] = edge;
+                const Vec3 d = centres_[s] - rim;
+                gap = d.norm();
+                if (!(gap > 0.0)) continue;
+                n = d / gap;
+            } else if (!(height > 0.0)) {
+                continue;  // behind the wall
+            }
+            if (!(gap < radii_[s])) continue;
+            const double overlap = radii_[s] - gap;
+            const Vec3 point = centres_[s] - (radii_[s] - 0.5 * overlap) * n;
             const std::size_t body = owner_[s];
             const Vec3 v = point_velocity(body, point) - wall.velocity;
             const std::uint64_t key = (static_cast<std::uint64_t>(s) << 32) | (sphere_count + w);
             Vec3 spring = spring_of(key);
-            const Vec3 f = law_.force(overlap, wall.normal, v, radii_[s], b.mass[body], spring, elapsed, wall.friction);
+            const Vec3 f = law_.force(overlap, n, v, radii_[s], b.mass[body], spring, elapsed, wall.friction);
             next_springs_[key] = spring;
             apply(body, point, f);
             wall_loads_[w] -= f;

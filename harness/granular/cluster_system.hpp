@@ -1,8 +1,8 @@
 // Clusters of spheres in contact with one another and with walls, under gravity: the force
 // model of the granular scenes (silo_discharge, direct_shear). Contacts are found by a linked-
-// cell search over the spheres, between spheres of different clusters and between a sphere
-// and a wall, and act by the Hertz-Mindlin law (hertz_mindlin.hpp). Contacts between spheres
-// of one cluster are not contacts: the cluster is rigid.
+// cell search over the clusters' bounding spheres, then between the spheres of two clusters
+// that may touch, and between a sphere and a wall; they act by the Hertz-Mindlin law
+// (hertz_mindlin.hpp). Spheres of one cluster do not touch: the cluster is rigid.
 #pragma once
 
 #include "harness/granular/ballast_shapes.hpp"
@@ -17,9 +17,10 @@
 
 namespace rotbench {
 
-// A flat wall, one-sided: it pushes a sphere whose centre lies in front of it (on the side of
-// the normal) closer than its radius, and inside `region` but not inside `hole` (an opening,
-// such as a silo's orifice; the opening's edges are not modelled).
+// A flat wall, one-sided: it pushes a sphere whose centre lies inside `region`, in front of it
+// (on the side of the normal) and closer than its radius. `hole` is an opening (a silo's
+// orifice), a box whose sides are parallel to the wall's normal, which must be a coordinate
+// axis: a sphere whose centre lies in it meets the opening's rim instead, from either side.
 struct Wall {
     Vec3 normal = Vec3::UnitZ();  // unit, towards the particles
     double offset = 0;            // the plane: normal . x = offset
@@ -64,12 +65,14 @@ private:
     Vec3 gravity_;
     std::vector<int> shape_of_;
     std::vector<std::size_t> first_sphere_;  // of each body, in the list of all spheres
-    double largest_radius_ = 0;
+    double largest_reach_ = 0;
+    double reach_of(std::size_t body) const { return shapes_[static_cast<std::size_t>(shape_of_[body])].reach; }
+    std::size_t sphere_count_of(std::size_t body) const { return shapes_[static_cast<std::size_t>(shape_of_[body])].spheres.size(); }
 
     // The state of the contacts between evaluations, and scratch space reused at every step.
     mutable std::unordered_map<std::uint64_t, Vec3> springs_, next_springs_;
     mutable double last_time_ = NAN, last_step_ = 0;
-    mutable std::vector<Vec3> wall_loads_, centres_;
+    mutable std::vector<Vec3> wall_loads_, centres_, positions_;
     mutable std::vector<double> radii_;
     mutable std::vector<std::size_t> owner_;
     mutable double elastic_energy_ = 0;
