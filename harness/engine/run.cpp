@@ -1,6 +1,7 @@
 #include "harness/engine/run.hpp"
 
 #include "harness/engine/interrupt.hpp"
+#include "harness/engine/timed_scheme.hpp"
 #include "harness/engine/timing.hpp"
 #include "harness/engine/reference.hpp"
 #include "harness/engine/run_kinds.hpp"
@@ -50,7 +51,8 @@ public:
           runaway_limit_(blowup_energy_factor * energy_scale_),
           tracks_energy_drift_(energy0_ != 0.0 && conserves_energy_),
           momentum0_(total_angular_momentum(initial)),
-          tracks_momentum_drift_(scene.conserves_angular_momentum() && momentum0_.norm() > 0.0) {
+          tracks_momentum_drift_(scene.conserves_angular_momentum() && momentum0_.norm() > 0.0),
+          probe_(scene.make_probe()) {
         if (series_stride_ > 0) {
             series_columns_ = {"t", "energy_error"};
             for (const auto& part : scene_.energy_parts(initial)) series_columns_.push_back(part.first);
@@ -87,6 +89,7 @@ public:
             quat_norm_sq_min_ = std::min(quat_norm_sq_min_, norm_sq);
         }
         if (reference_) compare_with_reference(n, t, b);
+        if (probe_) probe_->observe(t, b);
         return true;
     }
 
@@ -110,6 +113,8 @@ public:
         if (scene_.conserves_angular_momentum())
             add("momentum_drift_max", tracks_momentum_drift_ ? std::sqrt(momentum_change_sq_max_) / momentum0_.norm() : 0.0);
         // |(|q| - 1)| is largest at the largest or the smallest |q|^2 (both start at 1: no error).
+        if (probe_)
+            for (const auto& [name, value] : probe_->metrics()) r.metrics.emplace_back(name, unstable() ? nan : value);
         add("quat_norm_err_max", std::max(std::abs(std::sqrt(quat_norm_sq_max_) - 1.0), std::abs(std::sqrt(quat_norm_sq_min_) - 1.0)));
         if (unstable()) {
             r.metrics.emplace_back("fail_step", static_cast<double>(fail_step_));
@@ -152,6 +157,7 @@ private:
     bool tracks_energy_drift_;
     Vec3 momentum0_;
     bool tracks_momentum_drift_;
+    std::unique_ptr<SceneProbe> probe_;
     // Least-squares line through the envelope max_{s<=t} |E(s) - E0|/|E0|: its slope is
     // the secular drift rate (per second), apart from the bounded oscillation.
     struct LineFit {
@@ -265,10 +271,14 @@ RunResult run_trajectory(const RunSpec& requested, const RunOptions& options) {
 
     std::int64_t force_evals = 0, done = 0;
     bool unstable = false;
+    double loop_seconds = nan, rotation_seconds = nan;
     std::vector<Checkpoint> checkpoints;
     try {
         Bodies bodies = scene->initial_state();
-        auto scheme = scheme_entry.make();
+        std::unique_ptr<RotationScheme> scheme = scheme_entry.make();
+        TimedScheme* timed = nullptr;
+        if (scene->times_in_run()) scheme = std::make_unique<TimedScheme>(std::move(scheme)), timed = static_cast<TimedScheme*>(scheme.get());
+        const double loop_start = thread_cpu_seconds();
         const auto reference = make_reference(*scene, dt, steps);
         const std::int64_t stride = options.series_samples > 0 && scene->reports_energy_series()
                                         ? std::max<std::int64_t>(1, steps / options.series_samples)
@@ -285,6 +295,7 @@ RunResult run_trajectory(const RunSpec& requested, const RunOptions& options) {
             }
             return observer(n, t, b);
         });
+        if (timed) loop_seconds = thread_cpu_seconds() - loop_start, rotation_seconds = timed->seconds();
         observer.write(result);
         unstable = observer.unstable();
     } catch (const std::exception& e) {
@@ -297,7 +308,13 @@ RunResult run_trajectory(const RunSpec& requested, const RunOptions& options) {
 
     CpuTiming cpu{nan, nan, nan, 0, {}};
     std::int64_t timed_steps = 0;
-    if (!unstable && options.measure_time && requested.timed && !interrupt_signal()) {
+    if (!unstable && scene->times_in_run()) {
+        timed_steps = done;
+        cpu = {loop_seconds, loop_seconds, loop_seconds, 1, {loop_seconds}};
+        result.timing_samples = cpu.samples;
+        result.metrics.emplace_back("rotation_share", rotation_seconds / loop_seconds);
+        result.metrics.emplace_back("cpu_seconds_per_simulated_second", loop_seconds / result.spec.t_end);
+    } else if (!unstable && options.measure_time && requested.timed && !interrupt_signal()) {
         // Timing run: the same loop without the observer, so the reference solution and
         // the metrics are not charged to the scheme.
         const SampledTiming sampling(steps);

@@ -64,9 +64,10 @@ std::int64_t step_count(double t_end, double dt);
 inline constexpr double blowup_energy_factor = 1e6;
 
 // The metrics that time a run (cpu_seconds, cpu_seconds_min, cpu_seconds_max, cpu_seconds_run,
-// timing_repeats, ns_per_step): the only ones two runs of the same command may disagree on.
+// cpu_seconds_per_simulated_second, rotation_share, timing_repeats, ns_per_step): the only ones
+// two runs of the same command may disagree on.
 inline bool is_timing_metric(const std::string& name) {
-    return name.rfind("cpu_seconds", 0) == 0 || name == "ns_per_step" || name == "timing_repeats";
+    return name.rfind("cpu_seconds", 0) == 0 || name == "ns_per_step" || name == "timing_repeats" || name == "rotation_share";
 }
 
 struct RunOptions {

@@ -9,12 +9,22 @@
 #include "schemes/registry.hpp"
 
 #include <cstddef>
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
 namespace rotbench {
+
+// A scene's own measurements (the granular scenes' discharge and shear curves): the probe sees
+// the state after every step of the measured run and gives the scene's metrics at its end.
+class SceneProbe {
+public:
+    virtual ~SceneProbe() = default;
+    virtual void observe(double t, const Bodies& bodies) = 0;
+    virtual std::vector<std::pair<std::string, double>> metrics() const = 0;
+};
 
 // The bodies, their initial state and their force/torque model come from Dynamics
 // (references/dynamics.hpp), which the Odeint reference integrates.
@@ -32,6 +42,8 @@ public:
     // the quick suite's (a few coarse rungs, for CI).
     virtual std::vector<double> default_dts() const = 0;
     virtual std::vector<double> quick_dts() const = 0;
+    // What `--quick` sets besides the ladder (a smaller granular scene), before the user's keys.
+    virtual ParamOverrides quick_params() const { return {}; }
 
     // Where the reference solution comes from: a closed form (`exact`), or Boost.Odeint
     // on this scene's own equations of motion (references/odeint_reference.hpp).
@@ -60,6 +72,11 @@ public:
     // The torque seen in the body frame changes with the orientation (dipole_top): the
     // class of scenes where reports/expected_orders.hpp's "with torque" orders apply.
     virtual bool torque_depends_on_orientation() const { return false; }
+    // Runs too long to be repeated for timing (the granular scenes): their cost is measured in
+    // the run itself, the scheme's share of each step included (harness/engine/timed_scheme.hpp).
+    virtual bool times_in_run() const { return false; }
+    // A fresh probe for each measured run; none for most scenes.
+    virtual std::unique_ptr<SceneProbe> make_probe() const { return nullptr; }
     // In `rotbench run`'s default selection (false: a scene run only when named).
     virtual bool in_default_suite() const { return true; }
 };
