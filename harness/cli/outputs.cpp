@@ -1,8 +1,10 @@
 #include "harness/cli/outputs.hpp"
 
+#include "harness/analysis/ensemble.hpp"
 #include "harness/analysis/orders.hpp"
 #include "harness/analysis/result_set.hpp"
 #include "harness/engine/parallel.hpp"
+#include "harness/io/ensemble_csv.hpp"
 #include "harness/io/orders_csv.hpp"
 #include "harness/io/output_files.hpp"
 #include "harness/io/parse.hpp"
@@ -43,8 +45,11 @@ ReportOptions report_options(const std::vector<std::string>& tolerances, const f
     return options;
 }
 
-void write_outputs(const OutputDir& dir, const std::vector<RunResult>& results, const std::string& command_line,
+void write_outputs(const OutputDir& dir, const std::vector<RunResult>& all_runs, const std::string& command_line,
                    const ReportOptions& report, std::ostream& out) {
+    // An ensemble's members go to ensemble.csv; the other files hold their means and intervals.
+    if (const std::string members = ensemble_csv(all_runs); !members.empty()) dir.write("ensemble.csv", members);
+    const std::vector<RunResult> results = collapse_ensembles(all_runs);
     dir.write("results.csv", results_csv(results));
     dir.write("runs.csv", runs_csv(results));
     const auto orders = observed_orders(results);

@@ -20,7 +20,7 @@ inline constexpr int max_jobs = 1024, max_series_samples = 1000000;
 
 // The files `rotbench run` writes whose names are known before it starts.
 inline const std::vector<std::string> run_files = {"results.csv", "runs.csv", "orders.csv", "local_orders.csv", "answer.csv",
-                                                   "report.md"};
+                                                   "ensemble.csv", "report.md"};
 
 // The report's plots drawn on every core.
 Executor all_cores();

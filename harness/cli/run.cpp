@@ -29,6 +29,7 @@ struct RunOptionsText {
     std::vector<std::string> settings, tolerances;
     int energy_series = 200;
     int jobs = core_count();
+    int ensemble = 1;
     bool overwrite = false, quick = false, quiet = false;
 };
 
@@ -41,6 +42,7 @@ SweepSpec sweep_spec(const RunOptionsText& o) {
     if (!o.t_end.empty()) spec.t_end = parse_positive(o.t_end, "--t-end");
     for (const auto& s : o.settings) add_setting(spec, s);
     spec.quick = o.quick;
+    spec.ensemble = o.ensemble;
     return spec;
 }
 
@@ -53,7 +55,8 @@ void add_run_options(CLI::App& cmd, RunOptionsText& o) {
     cmd.add_flag("--overwrite", o.overwrite, "replace results (or an interrupted run) already in --out");
     cmd.add_option("--set", o.settings, "scene parameter, SCENE.KEY=VALUE (repeatable; VALUE may be a comma list)");
     cmd.add_option("--config", o.config, "TOML file with [run] selections and [SCENE] parameters");
-    cmd.add_flag("--quick", o.quick, "each scene's short ladder of time steps (for CI)");
+    cmd.add_flag("--quick", o.quick, "each scene's short ladder of time steps, and smaller granular scenes (for CI)");
+    cmd.add_option("--ensemble", o.ensemble, "K: run each scene with a seed key K times, seeds seed ... seed + K - 1 (means and 95 % intervals)");
     cmd.add_flag("--quiet", o.quiet, "no progress on stderr and no line per failed run");
     cmd.add_option("--shard", o.shard, "K/N: run only the K-th of N deterministic slices (combine with merge)");
     cmd.add_option("--resume", o.resume, "DIR: finish the interrupted run in DIR (with its own options; no other may be given)");

@@ -1,5 +1,6 @@
 #include "harness/engine/sweep.hpp"
 
+#include "harness/analysis/ensemble.hpp"
 #include "harness/engine/interrupt.hpp"
 #include "harness/engine/isolation.hpp"
 #include "harness/engine/machine.hpp"
@@ -40,6 +41,7 @@ std::vector<RunSpec> plan_sweep(const SweepSpec& spec) {
     if (scene_ids.empty())
         for (const auto& id : scenes.ids())
             if (make_scene(id)->in_default_suite()) scene_ids.push_back(id);
+    if (spec.ensemble < 1 || spec.ensemble > 1000) throw InputError(fmt::format("--ensemble must be 1 to 1000, got {}", spec.ensemble));
     const auto scheme_ids = spec.schemes.empty() ? schemes.ids() : spec.schemes;
     for (const auto& id : scheme_ids) schemes.at(id, "scheme");
     for (const auto& [scene_id, overrides] : spec.params) {
@@ -51,15 +53,22 @@ std::vector<RunSpec> plan_sweep(const SweepSpec& spec) {
     std::vector<RunSpec> plan;
     for (const auto& scene_id : scene_ids) {
         const auto found = spec.params.find(scene_id);
-        const ParamOverrides overrides = found == spec.params.end() ? ParamOverrides{} : found->second;
+        ParamOverrides overrides = spec.quick ? make_scene(scene_id)->quick_params() : ParamOverrides{};
+        if (found != spec.params.end()) overrides.insert(overrides.end(), found->second.begin(), found->second.end());
         ParamOverrides with_t_end = overrides;
         if (spec.t_end > 0.0) with_t_end.push_back({"t_end", {spec.t_end}});
         const auto scene = make_scene(scene_id, with_t_end);  // validates every override
         const double t_end = scene->t_end();
         const auto dts = !spec.dts.empty() ? spec.dts : spec.quick ? scene->quick_dts() : scene->default_dts();
         for (double dt : dts) check_reference_fits(*scene, dt, step_count(t_end, dt));  // validates dt against t_end
+        const auto& keys = scene->params.entries();
+        const bool seeded = std::any_of(keys.begin(), keys.end(), [](const auto& e) { return e.key == "seed"; });
+        const int members = seeded ? spec.ensemble : 1;
         for (const auto& scheme_id : scheme_ids)
-            for (double dt : dts) plan.push_back({scene_id, scheme_id, dt, t_end, overrides});
+            for (double dt : dts)
+                for (int k = 0; k < members; ++k)
+                    plan.push_back({scene_id, scheme_id, dt, t_end,
+                                    members > 1 ? ensemble_member(overrides, scene->params.number("seed"), k) : overrides});
     }
     return plan;
 }

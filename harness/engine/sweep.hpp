@@ -15,12 +15,13 @@ struct SweepSpec {
     std::vector<std::string> schemes;  // empty: every registered scheme
     std::vector<double> dts;           // empty: each scene's default ladder
     double t_end = 0.0;                // 0: each scene's default
-    bool quick = false;                // each scene's quick ladder instead of its default one
+    bool quick = false;                // each scene's quick ladder and sizes instead of its default ones
+    int ensemble = 1;                  // runs per scheme and dt of a scene with a `seed` key, seeds seed ... seed + K - 1
     std::map<std::string, ParamOverrides> params;  // scene id -> overrides (--set, config)
 };
 
-// The runs of a sweep in a fixed order (scene, scheme, dt as given). Checks every input
-// first, so a bad one is reported before anything runs (InputError).
+// The runs of a sweep in a fixed order (scene, scheme, dt as given, then ensemble member). Checks
+// every input first, so a bad one is reported before anything runs (InputError).
 std::vector<RunSpec> plan_sweep(const SweepSpec& spec);
 
 // Runs the plan on `jobs` threads; a failing run is recorded and the sweep goes on. The

@@ -1,0 +1,133 @@
+#include "harness/analysis/ensemble.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <gsl/gsl_cdf.h>
+#include <map>
+#include <optional>
+#include <set>
+#include <tuple>
+
+namespace rotbench {
+namespace {
+
+std::optional<double> seed_of(const RunSpec& spec) {
+    std::optional<double> seed;
+    for (const auto& [key, values] : spec.params)
+        if (key == "seed" && values.size() == 1) seed = values[0];
+    return seed;
+}
+
+ParamOverrides without_seed(const ParamOverrides& params) {
+    ParamOverrides out;
+    for (const auto& p : params)
+        if (p.first != "seed") out.push_back(p);
+    return out;
+}
+
+using GroupKey = std::tuple<std::string, std::string, double, int, ParamOverrides>;
+GroupKey group_of(const RunSpec& s) { return {s.scene, s.scheme, s.dt, static_cast<int>(s.kind), without_seed(s.params)}; }
+
+// Counts and flags: averaged, no interval.
+bool is_count(const std::string& name) {
+    static const std::set<std::string> counts = {"steps", "force_evals", "timed_steps", "unstable", "fail_step", "fail_time"};
+    return is_timing_metric(name) || counts.count(name) > 0;
+}
+
+struct Summary {
+    double mean = NAN, half_width = NAN;
+};
+// Mean and the half-width of the 95 % Student interval of the finite values.
+Summary summarise(const std::vector<double>& values) {
+    double n = 0, sum = 0;
+    for (double v : values)
+        if (std::isfinite(v)) n += 1, sum += v;
+    if (n == 0) return {};
+    const double mean = sum / n;
+    if (n < 2) return {mean, NAN};
+    double ss = 0;
+    for (double v : values)
+        if (std::isfinite(v)) ss += (v - mean) * (v - mean);
+    return {mean, gsl_cdf_tdist_Pinv(0.975, n - 1) * std::sqrt(ss / (n - 1)) / std::sqrt(n)};
+}
+
+}  // namespace
+
+ParamOverrides ensemble_member(const ParamOverrides& overrides, double base_seed, int k) {
+    ParamOverrides out = without_seed(overrides);
+    out.push_back({"seed", {base_seed + k}});
+    return out;
+}
+
+std::vector<RunResult> collapse_ensembles(const std::vector<RunResult>& runs) {
+    std::map<GroupKey, std::vector<const RunResult*>> groups;
+    for (const RunResult& r : runs)
+        if (seed_of(r.spec)) groups[group_of(r.spec)].push_back(&r);
+    std::vector<RunResult> out;
+    std::set<GroupKey> emitted;
+    for (const RunResult& r : runs) {
+        const auto found = seed_of(r.spec) ? groups.find(group_of(r.spec)) : groups.end();
+        if (found == groups.end() || found->second.size() < 2) {
+            out.push_back(r);
+            continue;
+        }
+        if (!emitted.insert(found->first).second) continue;  // collapsed at its first member
+        const std::vector<const RunResult*>& members = found->second;
+        RunResult c;
+        c.spec = r.spec;
+        c.spec.params = without_seed(r.spec.params);
+        // The reference scheme's members by seed, for the paired differences.
+        std::map<double, const RunResult*> reference;
+        if (r.spec.scheme != ensemble_reference_scheme) {
+            GroupKey key = found->first;
+            std::get<1>(key) = ensemble_reference_scheme;
+            if (const auto ref = groups.find(key); ref != groups.end())
+                for (const RunResult* m : ref->second) reference[*seed_of(m->spec)] = m;
+        }
+        std::vector<std::string> names;  // in the first member's order
+        for (const RunResult* m : members)
+            for (const auto& [name, value] : m->metrics)
+                if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+        double failed = 0;
+        for (const RunResult* m : members) failed += !m->failure.empty();
+        for (const std::string& name : names) {
+            std::vector<double> values, differences, reference_values;
+            for (const RunResult* m : members) {
+                const double v = m->failure.empty() ? m->value(name) : NAN;
+                values.push_back(v);
+                const auto ref = reference.find(*seed_of(m->spec));
+                if (ref == reference.end() || !ref->second->failure.empty()) continue;
+                const double rv = ref->second->value(name);
+                if (std::isfinite(v) && std::isfinite(rv)) differences.push_back(v - rv), reference_values.push_back(rv);
+            }
+            const Summary s = summarise(values);
+            c.metrics.emplace_back(name, s.mean);
+            if (is_count(name)) continue;
+            c.metrics.emplace_back(name + "_ci95", s.half_width);
+            if (differences.size() >= 2) {
+                const Summary d = summarise(differences), base = summarise(reference_values);
+                c.metrics.emplace_back(name + "_diff", 100.0 * d.mean / base.mean);
+                c.metrics.emplace_back(name + "_diff_ci95", 100.0 * d.half_width / std::abs(base.mean));
+            }
+        }
+        c.metrics.emplace_back("ensemble_size", static_cast<double>(members.size()));
+        c.metrics.emplace_back("ensemble_failed", failed);
+        if (failed == static_cast<double>(members.size())) c.failure = members.front()->failure;
+        for (const RunResult* m : members) c.timing_samples.insert(c.timing_samples.end(), m->timing_samples.begin(), m->timing_samples.end());
+        out.push_back(std::move(c));
+    }
+    return out;
+}
+
+std::vector<bool> ensemble_members(const std::vector<RunResult>& runs) {
+    std::map<GroupKey, int> sizes;
+    for (const RunResult& r : runs)
+        if (seed_of(r.spec)) ++sizes[group_of(r.spec)];
+    std::vector<bool> out;
+    for (const RunResult& r : runs) out.push_back(seed_of(r.spec) && sizes[group_of(r.spec)] >= 2);
+    return out;
+}
+
+double member_seed(const RunSpec& spec) { return seed_of(spec).value_or(NAN); }
+
+}  // namespace rotbench
