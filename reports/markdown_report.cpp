@@ -1,6 +1,7 @@
 #include "reports/markdown_report.hpp"
 
 #include "reports/cost_table.hpp"
+#include "reports/granular_report.hpp"
 #include "reports/provenance.hpp"
 
 #include "references/odeint_reference.hpp"
@@ -91,7 +92,10 @@ void scene_section(std::string& md, const SceneInfo& entry, const ResultSet& set
             md += fmt::format("Reference: Boost.Odeint (Fehlberg 7(8), tolerance {:g}), sampled at every step.\n\n",
                               reference_tolerance);
             break;
-        case Scene::ReferenceKind::none: md += "No step-by-step reference; the true motion conserves its energy.\n\n"; break;
+        case Scene::ReferenceKind::none:
+            md += entry.conserves_energy ? "No step-by-step reference; the true motion conserves its energy.\n\n"
+                                         : "No reference: the motion is dissipative and chaotic (see the section on granular scenes).\n\n";
+            break;
     }
     if (!runs.front()->spec.params.empty()) {
         md += "Parameters set:";
@@ -272,6 +276,7 @@ std::string markdown_report(const ResultSet& set, const std::string& command_lin
     });
     for (const auto& section : sections) md += section;
     table1_section(md, results);
+    md += granular_section(set);
     md += energy_series_section(set, dir, executor);
     schemes_section(md, set, expected);
     md += "## Metrics and the order fit\n\n"
