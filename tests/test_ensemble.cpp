@@ -54,7 +54,7 @@ TEST_CASE("ensembles: members collapse to a mean, a Student interval and a paire
     CHECK_FALSE(reference.has("discharge_time_diff"));
 }
 
-TEST_CASE("ensembles: a failed member is counted and left out; a lone run passes through") {
+TEST_CASE("ensembles: a failed member is counted and left out, and a lone run passes through") {
     std::vector<RunResult> runs = {member("direct", 1, 1.0), member("direct", 2, 5.0, "blew up at step 3"), member("direct", 3, 3.0)};
     RunResult lone = member("zvw", 1, 7.0);
     runs.push_back(lone);

@@ -49,7 +49,7 @@ public:
         params.require(fill_time_ >= 0.0, "fill_time", "must not be negative");
         shear_start_ = fill_time_ + params.number("consolidate");
         params.require(shear_start_ >= fill_time_, "consolidate", "must not be negative");
-        params.require(params.positive("t_end") > shear_start_, "t_end", "must be later than fill_time + consolidate");
+        params.positive("t_end");  // a run that ends before the shear (the filling alone) has NaN metrics
         const double mu = params.number("wall_friction");
         params.require(mu >= 0.0, "wall_friction", "must not be negative");
         const Vec3 all = Vec3::Constant(INFINITY);
