@@ -50,23 +50,14 @@ public:
         shear_start_ = fill_time_ + params.number("consolidate");
         params.require(shear_start_ >= fill_time_, "consolidate", "must not be negative");
         params.positive("t_end");  // a run that ends before the shear (the filling alone) has NaN metrics
-        const double mu = params.number("wall_friction");
-        params.require(mu >= 0.0, "wall_friction", "must not be negative");
-        const Vec3 all = Vec3::Constant(INFINITY);
-        // The halves' walls; until the split (evaluate_forces) the lower ones hold every stone.
-        system_->walls.push_back({Vec3::UnitZ(), 0.0, mu, Vec3::Zero(), {-all, all}, std::nullopt});  // floor
-        for (int half = 0; half < 2; ++half)
-            for (const Vec3& n : std::vector<Vec3>{Vec3::UnitX(), -Vec3::UnitX(), Vec3::UnitY(), -Vec3::UnitY()})
-                system_->walls.push_back({n, -0.5 * box_, mu, Vec3::Zero(), {-all, half == 0 ? all : -all}, std::nullopt});
-        system_->walls.push_back({-Vec3::UnitZ(), -INFINITY, mu, Vec3::Zero(), {-all, all}, std::nullopt});  // lid, far up
+        wall_friction_ = params.number("wall_friction");
+        params.require(wall_friction_ >= 0.0, "wall_friction", "must not be negative");
         for (const ClusterShape& s : system_->shapes()) mean_size_ += s.size / static_cast<double>(system_->shapes().size());
     }
 
     Bodies initial_state() const override {
         const double h = 0.5 * box_;
-        lid_z_ = INFINITY;
-        last_t_ = NAN;
-        split_ = INFINITY;
+        reset_box();
         return lattice_packing(Vec3(-h, -h, 0.0), Vec3(h, h, INFINITY));
     }
 
@@ -113,6 +104,22 @@ public:
 private:
     static constexpr std::size_t lid = 9, upper_x_walls[2] = {5, 6};
 
+    // The box as a run starts: evaluate_forces moves its walls and splits it, so every run
+    // (and every restart of one) builds it afresh. Until the split the lower walls hold every stone.
+    void reset_box() const {
+        const Vec3 all = Vec3::Constant(INFINITY);
+        const double mu = wall_friction_;
+        auto& walls = system_->walls;
+        walls.clear();
+        walls.push_back({Vec3::UnitZ(), 0.0, mu, Vec3::Zero(), {-all, all}, std::nullopt});  // floor
+        for (int half = 0; half < 2; ++half)
+            for (const Vec3& n : std::vector<Vec3>{Vec3::UnitX(), -Vec3::UnitX(), Vec3::UnitY(), -Vec3::UnitY()})
+                walls.push_back({n, -0.5 * box_, mu, Vec3::Zero(), {-all, half == 0 ? all : -all}, std::nullopt});
+        walls.push_back({-Vec3::UnitZ(), -INFINITY, mu, Vec3::Zero(), {-all, all}, std::nullopt});  // lid, far up
+        lid_z_ = INFINITY;
+        last_t_ = NAN;
+        split_ = INFINITY;
+    }
     double top(const Bodies& b) const {  // the highest sphere top
         double z = 0.0;
         for (const Sphere& s : system_->world_spheres(b)) z = std::max(z, s.centre.z() + s.radius);
@@ -167,7 +174,7 @@ private:
         double next_sample_ = 0, height_ = NAN;
     };
 
-    double box_ = 0, stress_ = 0, speed_ = 0, fill_time_ = 0, shear_start_ = 0, mean_size_ = 0;
+    double box_ = 0, wall_friction_ = 0, stress_ = 0, speed_ = 0, fill_time_ = 0, shear_start_ = 0, mean_size_ = 0;
     mutable double lid_z_ = INFINITY, last_t_ = NAN, split_ = INFINITY;  // the box's state, advanced by evaluate_forces
 };
 
