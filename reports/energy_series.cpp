@@ -66,7 +66,7 @@ std::string energy_series_section(const ResultSet& set, const OutputDir& dir, co
     // Plotted per scene: the coarsest and the finest step, and the steps of the seed's figures.
     std::map<std::string, std::pair<double, double>> range;  // scene -> (finest, coarsest)
     for (const auto& r : results)
-        if (!r.series.empty()) {
+        if (r.has_energy_series()) {
             auto [it, fresh] = range.try_emplace(r.spec.scene, r.spec.dt, r.spec.dt);
             it->second = {std::min(it->second.first, r.spec.dt), std::max(it->second.second, r.spec.dt)};
         }
@@ -80,7 +80,7 @@ std::string energy_series_section(const ResultSet& set, const OutputDir& dir, co
     std::map<std::pair<std::string, double>, std::vector<const RunResult*>> groups;
     std::map<std::pair<std::string, double>, std::vector<const RunResult*>> all_groups;  // for the slopes
     for (const auto& r : results)
-        if (!r.series.empty()) {
+        if (r.has_energy_series()) {
             all_groups[{r.spec.scene, r.spec.dt}].push_back(&r);
             if (plotted(r)) groups[{r.spec.scene, r.spec.dt}].push_back(&r);
         }

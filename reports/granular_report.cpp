@@ -1,6 +1,7 @@
 #include "reports/granular_report.hpp"
 
 #include "harness/analysis/ensemble.hpp"
+#include "reports/granular_pictures.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -61,7 +62,7 @@ std::string difference(const RunResult& r, const std::string& metric) {
 
 }  // namespace
 
-std::string granular_section(const ResultSet& set) {
+std::string granular_section(const ResultSet& set, const OutputDir& dir) {
     std::string md;
     for (const SceneMetrics& scene : granular_scenes) {
         std::vector<const RunResult*> runs;
@@ -103,6 +104,7 @@ std::string granular_section(const ResultSet& set) {
                     md += fmt::format("- {}: {:.0f} of {:.0f} runs failed{}.\n", r->spec.scheme,
                                       r->has("ensemble_failed") ? r->value("ensemble_failed") : 1.0, members,
                                       r->failure.empty() ? "" : ": " + r->failure);
+            md += "\n" + granular_pictures(scene.scene, dt, group, dir);
         }
     }
     return md;

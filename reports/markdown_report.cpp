@@ -276,7 +276,7 @@ std::string markdown_report(const ResultSet& set, const std::string& command_lin
     });
     for (const auto& section : sections) md += section;
     table1_section(md, results);
-    md += granular_section(set);
+    md += granular_section(set, dir);
     md += energy_series_section(set, dir, executor);
     schemes_section(md, set, expected);
     md += "## Metrics and the order fit\n\n"

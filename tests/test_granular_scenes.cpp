@@ -39,6 +39,13 @@ TEST_CASE("granular scenes: an ensemble split into shards merges into the unshar
     CHECK(members.find("silo_discharge,direct,2e-05,1,") != std::string::npos);
     CHECK(members.find("silo_discharge,direct,2e-05,2,") != std::string::npos);
     CHECK(metric(read_results(dir / "whole"), "silo_discharge", "direct", "ensemble_size") == 2);
+    // The shards keep each member's curve and snapshots; merged, they give the whole run's band and pictures.
+    CHECK(fs::exists(dir / "a" / "series" / "curve_silo_discharge_direct_dt2e-05_seed1.csv"));
+    for (const char* file : {"series/curve_silo_discharge_direct_dt2e-05.csv", "snapshots/silo_discharge_direct_dt2e-05.csv"}) {
+        INFO(file);
+        CHECK(read(dir / "merged" / file) == read(dir / "whole" / file));
+    }
+    CHECK(read(dir / "whole" / "series" / "curve_silo_discharge_direct_dt2e-05.csv").rfind("t_open,mass_left,mass_left_min,mass_left_max\n", 0) == 0);
     fs::remove_all(dir);
 }
 

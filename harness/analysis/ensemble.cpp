@@ -51,6 +51,43 @@ Summary summarise(const std::vector<double>& values) {
     return {mean, gsl_cdf_tdist_Pinv(0.975, n - 1) * std::sqrt(ss / (n - 1)) / std::sqrt(n)};
 }
 
+// The members' curves as one band: the abscissa, then for each other column its mean over the
+// members, then its least and its largest value, row by row over the rows every member has at
+// the same abscissa (the same dt samples the same instants). Only members that did not fail
+// and recorded a curve count; with none, no band.
+void collapse_curves(const std::vector<const RunResult*>& members, RunResult& c) {
+    std::vector<const RunResult*> curves;
+    for (const RunResult* m : members)
+        if (m->failure.empty() && !m->series.empty() && !m->has_energy_series()) curves.push_back(m);
+    if (curves.empty()) return;
+    const RunResult& first = *curves.front();
+    std::size_t rows = first.series.size();
+    for (const RunResult* m : curves) {
+        if (m->series_columns != first.series_columns) return;
+        rows = std::min(rows, m->series.size());
+        for (std::size_t k = 0; k < rows; ++k)
+            if (m->series[k].at(0) != first.series[k].at(0)) rows = k;
+    }
+    const std::size_t ys = first.series_columns.size() - 1;
+    c.series_columns = {first.series_columns.front()};
+    for (const char* suffix : {"", "_min", "_max"})
+        for (std::size_t j = 1; j <= ys; ++j) c.series_columns.push_back(first.series_columns[j] + suffix);
+    for (std::size_t k = 0; k < rows; ++k) {
+        std::vector<double> row(1 + 3 * ys, 0.0);
+        row[0] = first.series[k][0];
+        for (std::size_t j = 1; j <= ys; ++j) {
+            double lo = INFINITY, hi = -INFINITY;
+            for (const RunResult* m : curves) {
+                const double v = m->series[k][j];
+                row[j] += v / static_cast<double>(curves.size());
+                lo = std::min(lo, v), hi = std::max(hi, v);
+            }
+            row[ys + j] = lo, row[2 * ys + j] = hi;
+        }
+        c.series.push_back(std::move(row));
+    }
+}
+
 }  // namespace
 
 ParamOverrides ensemble_member(const ParamOverrides& overrides, double base_seed, int k) {
@@ -114,6 +151,12 @@ std::vector<RunResult> collapse_ensembles(const std::vector<RunResult>& runs) {
         c.metrics.emplace_back("ensemble_failed", failed);
         if (failed == static_cast<double>(members.size())) c.failure = members.front()->failure;
         for (const RunResult* m : members) c.timing_samples.insert(c.timing_samples.end(), m->timing_samples.begin(), m->timing_samples.end());
+        collapse_curves(members, c);
+        for (const RunResult* m : members)  // the pictures of the first member that has them
+            if (m->failure.empty() && !m->snapshots.empty()) {
+                c.snapshots = m->snapshots;
+                break;
+            }
         out.push_back(std::move(c));
     }
     return out;

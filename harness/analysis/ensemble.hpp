@@ -27,7 +27,9 @@ ParamOverrides ensemble_member(const ParamOverrides& overrides, double base_seed
 //                      seeds, in % of that scheme's mean (as the seed's tables give theirs);
 //   <metric>_diff_ci95 half-width of the paired 95 % interval of that difference, in %;
 //   ensemble_size, ensemble_failed  members, and those that failed.
-// Counts and timings are averaged without intervals. Other runs pass through unchanged.
+// Counts and timings are averaged without intervals. A granular scene's curve becomes a band
+// (each y column's member mean, then y_min and y_max: the envelope of the members) and the
+// snapshots are the first member's. Other runs pass through unchanged.
 std::vector<RunResult> collapse_ensembles(const std::vector<RunResult>& runs);
 
 // Whether each run is a member of an ensemble of two or more, and its seed.

@@ -123,6 +123,13 @@ public:
         }
         r.series_columns = series_columns_;
         r.series = series_;
+        if (probe_ && !unstable()) {  // the energy series and a probe's curve never meet: granular scenes are damped
+            if (SceneProbe::Curve curve = probe_->curve(); !curve.rows.empty() && r.series.empty()) {
+                r.series_columns = std::move(curve.columns);
+                r.series = std::move(curve.rows);
+            }
+            r.snapshots = probe_->snapshots();
+        }
     }
 
 private:

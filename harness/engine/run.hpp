@@ -36,14 +36,18 @@ struct RunResult {
     std::string failure;  // empty, or why the run stopped early
     bool interrupted = false;  // SIGINT or SIGTERM stopped it: not a result
     // Energy against time, when asked for: columns t, energy_error ((E - E0)/|E0|), then
-    // the scene's energy parts by name.
+    // the scene's energy parts by name. Or a granular scene's curve (SceneProbe::curve), which
+    // an ensemble's result holds as a band: each y column's mean, then y_min and y_max.
     std::vector<std::string> series_columns;
     std::vector<std::vector<double>> series;
+    // A granular scene's pictures (SceneProbe::snapshots): rows t, x, y, z, radius.
+    std::vector<std::vector<double>> snapshots;
     // The CPU time of each timing repeat, scaled to the whole run as cpu_seconds is: the
     // samples `rotbench compare` tests a cost change against.
     std::vector<double> timing_samples;
 
     bool has(const std::string& name) const;
+    bool has_energy_series() const { return series_columns.size() >= 2 && series_columns[1] == "energy_error"; }
     double value(const std::string& name) const;  // NaN when absent
 };
 

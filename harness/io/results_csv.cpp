@@ -124,22 +124,36 @@ void add_metrics(const std::string& results_text, const std::string& source, con
     if (next != rows.size()) throw InputError(where(name, rows[next]) + ": a row that no run of runs.csv accounts for");
 }
 
-void add_series(const std::map<std::string, std::string>& series, const std::string& source, std::vector<RunResult>& results) {
-    for (auto& r : results) {  // energy series, where the run recorded one
+std::vector<std::vector<double>> parse_table(const std::string& text, const std::string& name, std::vector<std::string>& columns) {
+    const auto records = parse_csv(text, name);
+    if (records.empty() || text.back() != '\n') throw InputError(name + ": empty or cut short");
+    columns = records.front().fields;
+    std::vector<std::vector<double>> rows;
+    for (std::size_t k = 1; k < records.size(); ++k) {
+        if (records[k].size() != columns.size())
+            throw InputError(fmt::format("{}: expected {} fields", where(name, records[k]), columns.size()));
+        std::vector<double> row;
+        for (const auto& v : records[k].fields) row.push_back(csv_number(v, where(name, records[k])));
+        rows.push_back(std::move(row));
+    }
+    return rows;
+}
+
+// The series and snapshots of the runs that recorded them (`files`: path under the directory -> text).
+void add_series(const std::map<std::string, std::string>& files, const std::string& source, std::vector<RunResult>& results) {
+    for (auto& r : results) {
         if (r.spec.kind != RunKind::trajectory) continue;
-        const auto found = series.find(series_file_name(r));
-        if (found == series.end()) continue;
-        const std::string name = source + "/series/" + found->first;
-        const auto& text = found->second;
-        const auto records = parse_csv(text, name);
-        if (records.empty() || text.back() != '\n') throw InputError(name + ": empty or cut short");
-        r.series_columns = records.front().fields;
-        for (std::size_t k = 1; k < records.size(); ++k) {
-            if (records[k].size() != r.series_columns.size())
-                throw InputError(fmt::format("{}: expected {} fields", where(name, records[k]), r.series_columns.size()));
-            std::vector<double> row;
-            for (const auto& v : records[k].fields) row.push_back(csv_number(v, where(name, records[k])));
-            r.series.push_back(std::move(row));
+        for (const bool energy : {true, false}) {
+            const auto found = files.find("series/" + series_file_name(r.spec, energy));
+            if (found == files.end()) continue;
+            r.series = parse_table(found->second, source + "/" + found->first, r.series_columns);
+            if (r.has_energy_series() != energy) throw InputError(source + "/" + found->first + ": its columns do not name its kind");
+            break;
+        }
+        if (const auto found = files.find("snapshots/" + snapshot_file_name(r.spec)); found != files.end()) {
+            std::vector<std::string> columns;
+            r.snapshots = parse_table(found->second, source + "/" + found->first, columns);
+            if (columns != snapshot_columns) throw InputError(source + "/" + found->first + ": expected the columns t,x,y,z,radius");
         }
     }
 }
@@ -162,11 +176,13 @@ std::vector<RunResult> read_results(const std::filesystem::path& dir) {
     std::vector<std::size_t> counts;
     auto results = parse_runs(text(dir / "runs.csv"), dir.string(), counts);
     add_metrics(text(dir / "results.csv"), dir.string(), counts, results);
-    std::map<std::string, std::string> series;
-    std::error_code ec;
-    for (const auto& e : std::filesystem::directory_iterator(dir / "series", ec))
-        if (e.path().extension() == ".csv") series.emplace(e.path().filename().string(), read_input_file(e.path(), "cannot read"));
-    add_series(series, dir.string(), results);
+    std::map<std::string, std::string> files;
+    for (const std::string folder : {"series", "snapshots"}) {
+        std::error_code ec;
+        for (const auto& e : std::filesystem::directory_iterator(dir / folder, ec))
+            if (e.path().extension() == ".csv") files.emplace(folder + "/" + e.path().filename().string(), read_input_file(e.path(), "cannot read"));
+    }
+    add_series(files, dir.string(), results);
     return results;
 }
 

@@ -20,11 +20,11 @@ std::string results_csv(const std::vector<RunResult>& results);
 // (harness/io/csv.hpp).
 std::string runs_csv(const std::vector<RunResult>& results);
 
-// Reads results.csv and runs.csv (and the energy series under series/) back. InputError
-// when a file is missing or malformed.
+// Reads results.csv and runs.csv (and the series under series/, the snapshots under
+// snapshots/) back. InputError when a file is missing or malformed.
 std::vector<RunResult> read_results(const std::filesystem::path& dir);
-// The same from the files' texts (a run journal keeps them so), `series` mapping a series
-// file's name to its text; `source` stands for the directory in error messages.
+// The same from the files' texts (a run journal keeps them so), `series` mapping a series or
+// snapshot file's path under the directory ("series/NAME", "snapshots/NAME") to its text; `source` stands for the directory in error messages.
 std::vector<RunResult> parse_results(const std::string& results_text, const std::string& runs_text,
                                      const std::map<std::string, std::string>& series, const std::string& source);
 

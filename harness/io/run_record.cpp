@@ -5,36 +5,38 @@
 
 #include <charconv>
 #include <fmt/format.h>
+#include <map>
 
 namespace rotbench {
 
 std::string run_record(std::size_t index, const RunResult& result) {
     const std::string results = results_csv({result}), runs = runs_csv({result});
     const std::string series = result.series.empty() ? "" : series_csv(result);
-    return fmt::format("run {} {} {} {}\n{}{}{}end {}\n", index, results.size(), runs.size(), series.size(), results, runs, series,
-                       index);
+    const std::string snapshots = result.snapshots.empty() ? "" : snapshot_csv(result);
+    return fmt::format("run {} {} {} {} {}\n{}{}{}{}end {}\n", index, results.size(), runs.size(), series.size(), snapshots.size(), results,
+                       runs, series, snapshots, index);
 }
 
 namespace {
 
-// "run I R N S": five words, four of them counts; false for anything else.
-bool parse_header(const std::string& line, std::size_t& index, std::size_t (&lengths)[3]) {
-    std::size_t values[4] = {0, 0, 0, 0};
+// "run I R N S P": six words, five of them counts; false for anything else.
+bool parse_header(const std::string& line, std::size_t& index, std::size_t (&lengths)[4]) {
+    std::size_t values[5] = {0, 0, 0, 0, 0};
     std::size_t at = 0;
     if (line.compare(0, 4, "run ") != 0) return false;
     at = 4;
-    for (int k = 0; k < 4; ++k) {
+    for (int k = 0; k < 5; ++k) {
         const auto [ptr, ec] = std::from_chars(line.data() + at, line.data() + line.size(), values[k]);
         if (ec != std::errc()) return false;
         at = static_cast<std::size_t>(ptr - line.data());
-        if (k < 3) {
+        if (k < 4) {
             if (at >= line.size() || line[at] != ' ') return false;
             ++at;
         }
     }
     if (at != line.size()) return false;
     index = values[0];
-    for (int k = 0; k < 3; ++k) lengths[k] = values[k + 1];
+    for (int k = 0; k < 4; ++k) lengths[k] = values[k + 1];
     return true;
 }
 
@@ -46,20 +48,33 @@ RunRecords parse_run_records(const std::string& text, const std::string& name) {
     while (at < text.size()) {
         const std::size_t line_end = text.find('\n', at);
         if (line_end == std::string::npos) break;
-        std::size_t index = 0, lengths[3] = {0, 0, 0};
+        std::size_t index = 0, lengths[4] = {0, 0, 0, 0};
         if (!parse_header(text.substr(at, line_end - at), index, lengths)) break;
         const std::size_t body = line_end + 1;
-        const std::size_t remaining = text.size() - body;
-        if (lengths[0] > remaining || lengths[1] > remaining - lengths[0] || lengths[2] > remaining - lengths[0] - lengths[1]) break;
-        const std::size_t end = body + lengths[0] + lengths[1] + lengths[2];
+        std::size_t remaining = text.size() - body, offsets[4] = {0, 0, 0, 0};
+        bool fits = true;
+        for (int k = 0; k < 4; ++k) {
+            if (lengths[k] > remaining) fits = false;
+            if (!fits) break;
+            remaining -= lengths[k];
+            if (k < 3) offsets[k + 1] = offsets[k] + lengths[k];
+        }
+        if (!fits) break;
+        const std::size_t end = body + offsets[3] + lengths[3];
         const std::string trailer = fmt::format("end {}\n", index);
         if (end + trailer.size() > text.size() || text.compare(end, trailer.size(), trailer) != 0) break;
-        const std::string results = text.substr(body, lengths[0]), runs = text.substr(body + lengths[0], lengths[1]);
+        const std::string results = text.substr(body, lengths[0]), runs = text.substr(body + offsets[1], lengths[1]);
         auto parsed = parse_results(results, runs, {}, name);
         if (parsed.size() != 1) throw InputError(name + ": a record that does not hold one run");
-        if (lengths[2] > 0)  // again, with the series under the name the run gives it
-            parsed = parse_results(results, runs, {{series_file_name(parsed.front()), text.substr(body + lengths[0] + lengths[1], lengths[2])}},
-                                   name);
+        if (lengths[2] > 0 || lengths[3] > 0) {  // again, with the series and snapshots under the names the run gives them
+            const std::string series = text.substr(body + offsets[2], lengths[2]);
+            const std::string head = series.substr(0, series.find('\n'));  // RunResult::has_energy_series, read off the header
+            const bool energy = head == "t,energy_error" || head.rfind("t,energy_error,", 0) == 0;
+            std::map<std::string, std::string> files;
+            if (lengths[2] > 0) files["series/" + series_file_name(parsed.front().spec, energy)] = series;
+            if (lengths[3] > 0) files["snapshots/" + snapshot_file_name(parsed.front().spec)] = text.substr(body + offsets[3], lengths[3]);
+            parsed = parse_results(results, runs, files, name);
+        }
         found.runs.emplace_back(index, std::move(parsed.front()));
         at = end + trailer.size();
         found.whole_length = at;

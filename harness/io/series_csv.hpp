@@ -1,5 +1,7 @@
-// Energy series of runs: DIR/series/energy_SCENE_SCHEME_dtDT.csv, columns t, energy_error,
-// then the scene's energy parts by name.
+// The series of runs, under DIR/series/: energy_SCENE_SCHEME_dtDT.csv (columns t, energy_error,
+// then the scene's energy parts by name) or curve_SCENE_SCHEME_dtDT.csv (a granular scene's
+// curve, or an ensemble's band); a member of an ensemble adds _seedS. And the granular scenes'
+// snapshots: DIR/snapshots/SCENE_SCHEME_dtDT[_seedS].csv, columns t, x, y, z, radius.
 #pragma once
 
 #include "harness/engine/run.hpp"
@@ -15,10 +17,17 @@ namespace rotbench {
 std::string dt_tag(double dt);
 // A run's series file: its name (under series/) and its text.
 std::string series_file_name(const RunResult& r);
+std::string series_file_name(const RunSpec& spec, bool energy);  // the name either kind would have
 std::string series_csv(const RunResult& r);
 void write_series_file(const RunResult& r, const OutputDir& dir);  // dir/series/NAME
 
-// DIR/series/*.csv for every run that recorded a series (a shard keeps them all for merge).
-void write_energy_series(const std::vector<RunResult>& results, const OutputDir& dir);
+// A run's snapshot file: its name (under snapshots/) and its text.
+std::string snapshot_file_name(const RunSpec& spec);
+inline const std::vector<std::string> snapshot_columns = {"t", "x", "y", "z", "radius"};
+std::string snapshot_csv(const RunResult& r);
+
+// DIR/series/*.csv and DIR/snapshots/*.csv for every run that recorded them (a shard keeps them
+// all for merge).
+void write_run_series(const std::vector<RunResult>& results, const OutputDir& dir);
 
 }  // namespace rotbench

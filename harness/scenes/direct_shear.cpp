@@ -136,8 +136,9 @@ private:
     class Probe final : public SceneProbe {
     public:
         explicit Probe(const DirectShear& scene) : scene_(scene) {}
-        void observe(double t, const Bodies&) override {
+        void observe(double t, const Bodies& b) override {
             if (t <= scene_.shear_start_ || t < next_sample_) return;
+            last_ = b, last_t_ = t;  // for the picture at the end
             if (std::isnan(height_)) height_ = scene_.lid_z_;
             next_sample_ = t + 1e-3;
             const auto& loads = scene_.system_->wall_loads();
@@ -165,13 +166,33 @@ private:
                     {"inertial_number", samples_.empty() ? NAN : inertial}};
         }
 
+        // The shear stress averaged over windows of 0.1 mm of displacement (20 samples at the
+        // default speed): the stick-slip stays visible, the sampling noise does not.
+        Curve curve() const override {
+            Curve c{{"displacement", "shear_stress"}, {}};
+            for (std::size_t k = 0; k < samples_.size();) {
+                const double window = std::floor(samples_[k].displacement / 1e-4);
+                double sum = 0, n = 0;
+                for (; k < samples_.size() && std::floor(samples_[k].displacement / 1e-4) == window; ++k) sum += samples_[k].shear, n += 1;
+                c.rows.push_back({(window + 0.5) * 1e-4, sum / n});
+            }
+            return c;
+        }
+        std::vector<std::vector<double>> snapshots() const override {
+            std::vector<std::vector<double>> rows;
+            if (!samples_.empty())
+                for (const Sphere& s : scene_.system_->world_spheres(last_)) rows.push_back({last_t_, s.centre.x(), s.centre.y(), s.centre.z(), s.radius});
+            return rows;
+        }
+
     private:
         struct Sample {
             double displacement, shear, normal;
         };
         const DirectShear& scene_;
         std::vector<Sample> samples_;
-        double next_sample_ = 0, height_ = NAN;
+        double next_sample_ = 0, height_ = NAN, last_t_ = NAN;
+        Bodies last_;
     };
 
     double box_ = 0, wall_friction_ = 0, stress_ = 0, speed_ = 0, fill_time_ = 0, shear_start_ = 0, mean_size_ = 0;

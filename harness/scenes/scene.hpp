@@ -18,12 +18,22 @@
 namespace rotbench {
 
 // A scene's own measurements (the granular scenes' discharge and shear curves): the probe sees
-// the state after every step of the measured run and gives the scene's metrics at its end.
+// the state after every step of the measured run and gives the scene's metrics at its end,
+// and, for the report's pictures, a curve and snapshots of the bodies.
 class SceneProbe {
 public:
     virtual ~SceneProbe() = default;
     virtual void observe(double t, const Bodies& bodies) = 0;
     virtual std::vector<std::pair<std::string, double>> metrics() const = 0;
+    // The run's curve: column names (the abscissa first) and rows (mass left against time,
+    // shear stress against displacement); none by default.
+    struct Curve {
+        std::vector<std::string> columns;
+        std::vector<std::vector<double>> rows;
+    };
+    virtual Curve curve() const { return {}; }
+    // The spheres of every body at a few instants, as rows {t, x, y, z, radius}; none by default.
+    virtual std::vector<std::vector<double>> snapshots() const { return {}; }
 };
 
 // The bodies, their initial state and their force/torque model come from Dynamics

@@ -116,6 +116,20 @@ private:
                 if (b.position[i].z() > 0.0) left += b.mass[i];
             curve_.emplace_back(t - scene_.fill_time_, left);
             last_ = b;  // the heap is measured on the last sample, at the end
+            // Pictures: at the opening, halfway from it to the end, and (snapshots()) at the end.
+            const double halfway = 0.5 * (scene_.fill_time_ + scene_.t_end());
+            if (pictured_ == 0 || (pictured_ == 1 && t >= halfway)) add_picture(t, b, pictures_), ++pictured_;
+        }
+        // Every tenth sample (10 ms): enough for the picture, and the same times in every run of one dt.
+        Curve curve() const override {
+            Curve c{{"t_open", "mass_left"}, {}};
+            for (std::size_t k = 0; k < curve_.size(); k += 10) c.rows.push_back({curve_[k].first, curve_[k].second});
+            return c;
+        }
+        std::vector<std::vector<double>> snapshots() const override {
+            std::vector<std::vector<double>> rows = pictures_;
+            if (!curve_.empty()) add_picture(curve_.back().first + scene_.fill_time_, last_, rows);
+            return rows;
         }
         std::vector<std::pair<std::string, double>> metrics() const override {
             if (curve_.empty()) return {{"discharge_time", NAN}, {"mass_flow_rate", NAN}, {"repose_angle", NAN}, {"mass_left_end", NAN}};
@@ -168,10 +182,16 @@ private:
             return directions ? sum / directions : NAN;
         }
 
+        void add_picture(double t, const Bodies& b, std::vector<std::vector<double>>& rows) const {
+            for (const Sphere& s : scene_.system_->world_spheres(b)) rows.push_back({t, s.centre.x(), s.centre.y(), s.centre.z(), s.radius});
+        }
+
         const SiloDischarge& scene_;
         std::vector<std::pair<double, double>> curve_;  // time since opening, mass left
         double next_sample_ = 0;
         Bodies last_;
+        std::vector<std::vector<double>> pictures_;  // at the opening and halfway
+        int pictured_ = 0;
     };
 
     double width_ = 0, orifice_ = 0, drop_ = 0, fill_time_ = 0, discharged_ = 0, stall_ = 0;

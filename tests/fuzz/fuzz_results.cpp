@@ -15,7 +15,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         parts[part] = input.substr(begin, end - begin);
         begin = end + 1;
     }
-    fuzz::parse_or_input_error([&] { parse_results(parts[0], parts[1], {{"energy_fibre_bounce_direct_dt1e-06.csv", parts[2]}}, "fuzz"); });
+    fuzz::parse_or_input_error([&] { parse_results(parts[0], parts[1], {{"series/energy_fibre_bounce_direct_dt1e-06.csv", parts[2]}}, "fuzz"); });
     fuzz::parse_or_input_error([&] { parse_run_records(input, "fuzz/partial/runs"); });
     return 0;
 }
