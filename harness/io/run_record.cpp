@@ -53,10 +53,9 @@ RunRecords parse_run_records(const std::string& text, const std::string& name) {
         const std::size_t body = line_end + 1;
         std::size_t remaining = text.size() - body, offsets[4] = {0, 0, 0, 0};
         bool fits = true;
-        for (int k = 0; k < 4; ++k) {
-            if (lengths[k] > remaining) fits = false;
-            if (!fits) break;
-            remaining -= lengths[k];
+        for (int k = 0; k < 4 && fits; ++k) {
+            fits = lengths[k] <= remaining;
+            remaining -= fits ? lengths[k] : 0;
             if (k < 3) offsets[k + 1] = offsets[k] + lengths[k];
         }
         if (!fits) break;
