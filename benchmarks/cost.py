@@ -29,9 +29,14 @@ repeatability study, 10 processes of 3 repetitions, the two
 tables being the odd and the even processes (docs/performance.md says why; several minutes).
 
 Progress goes to stderr: a status line on a terminal, a line every 5 s otherwise, nothing
-with --quiet. --plugin PATH (repeatable) costs a plug-in's schemes beside the built-in ones.
+with --quiet. --plugin PATH (repeatable) costs a plug-in's schemes beside the built-in ones;
+--schemes A,B costs only those (and direct, which the ratios are to).
 
-Usage: benchmarks/cost.py [--thorough] [--quiet] [--plugin PATH]... BUILD_DIR OUT_DIR
+A scheme whose process crashes, exits, throws or runs past --timeout (default 300 s) is not
+costed: its row keeps only its id and `failure` (why), and the other schemes are costed as
+usual. The benchmark, which times every scheme in one process, is then run again without it.
+
+Usage: benchmarks/cost.py [--thorough] [--quiet] [--plugin PATH]... [--schemes A,B] [--timeout S] BUILD_DIR OUT_DIR
 """
 import argparse
 import concurrent.futures
@@ -42,13 +47,14 @@ import re
 import subprocess
 import sys
 import tempfile
+import threading
 import time
 
 SLOW_INSTRUCTIONS = 5000
 COLUMNS = ["scheme", "bodies", "ns_batched", "ns_batched_spread", "ns_alone", "ns_alone_spread", "speedup",
            "instr_batched", "instr_alone", "ns_ratio_to_direct", "instr_ratio_to_direct", "libm_instr_alone",
            "memory_share", "speedup_runs_differ", "ns_ratio_runs_differ", "public", "public_ratio_batched",
-           "public_ratio_alone", "public_ratio_runs_differ", "mode"]
+           "public_ratio_alone", "public_ratio_runs_differ", "mode", "failure"]
 PUBLIC_COUNTERPARTS = "rotbench_public_counterparts.so"
 
 
@@ -84,13 +90,38 @@ def fail(message):
     sys.exit(2)
 
 
-def run(command, **kwargs):
-    """A command's stdout; its stderr's last line as the error when it fails. A list of
-    arguments, never a shell: paths are passed as they are."""
-    done = subprocess.run(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, **kwargs)
+class Failed(Exception):
+    """A tool's process that failed on one scheme: why, in one line."""
+
+
+def why(name, returncode, stderr):
+    """One line, no commas (cost.csv's readers split on them): the signal that killed the
+    process, else the last line of its stderr, else its exit status.
+
+    >>> why("bench", -11, "==1== valgrind's words")
+    'bench killed by signal 11'
+    >>> why("bench", 1, "a\\nterminate called: x, y\\n")
+    'bench failed: terminate called: x; y'
+    >>> why("bench", 7, "")
+    'bench exited with 7'
+    """
+    lines = stderr.strip().splitlines()
+    text = (f"{name} killed by signal {-returncode}" if returncode < 0 else
+            f"{name} failed: {lines[-1]}" if lines else f"{name} exited with {returncode}")
+    return text.replace(",", ";")
+
+
+def run(command, timeout=None):
+    """A command's stdout; Failed when it fails or runs past `timeout` s. A list of arguments,
+    never a shell: paths are passed as they are."""
+    name = os.path.basename(command[0])
+    try:
+        done = subprocess.run(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, errors="replace",
+                              timeout=timeout)
+    except subprocess.TimeoutExpired:
+        raise Failed(f"{name} ran past {timeout:g} s")
     if done.returncode != 0:
-        lines = done.stderr.strip().splitlines()
-        fail(f"{os.path.basename(command[0])} failed: {lines[-1] if lines else f'exit {done.returncode}'}")
+        raise Failed(why(name, done.returncode, done.stderr))
     return done.stdout
 
 
@@ -119,14 +150,14 @@ def callgrind_counts(path):
     return total, libm
 
 
-def count_instructions(driver, plugin_args, scheme, sizes, tmp):
+def count_instructions(driver, plugin_args, scheme, sizes, tmp, timeout):
     """Per body-step for each (bodies, steps): (all instructions, those in libm)."""
     out = os.path.join(tmp, f"callgrind.{scheme}")
     command = ["valgrind", "--tool=callgrind", "--collect-atstart=no", f"--callgrind-out-file={out}", driver,
                *plugin_args, scheme]
     for n, s in sizes:
         command += [str(n), str(s)]
-    run(command)
+    run(command, timeout)
     result = []
     for k, (n, s) in enumerate(sizes, start=1):
         total, libm = callgrind_counts(f"{out}.{k}")
@@ -148,32 +179,72 @@ def best_counterparts(schemes, ns_alone):
     return {s: min(ps, key=lambda p: ns_alone[p]) for s, ps in groups.items()}
 
 
-def bench_table(bench, plugin_args, names, repetitions, progress, stage):
-    """One benchmark process: name -> its repetitions (ns per body-step)."""
+def bench_process(bench, plugin_args, names, repetitions, timeout, on_row):
+    """One benchmark process over `names`: name -> its repetitions (ns per body-step), and why
+    the process failed (None when it did not)."""
     pattern = "^(" + "|".join(re.escape(n) for n in names) + ")$"
-    found, expected, done, started = {}, len(names) * repetitions, 0, time.monotonic()
+    found = {}
     command = [bench, *plugin_args, f"--benchmark_filter={pattern}", "--benchmark_min_time=0.02",
                f"--benchmark_repetitions={repetitions}", "--benchmark_enable_random_interleaving=true",
                "--benchmark_report_aggregates_only=false", "--benchmark_format=csv"]
-    with subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True) as p:
-        header = None
-        for line in p.stdout:
-            if line.startswith("name,"):
-                header = line
-                continue
-            if header is None:
-                continue
-            row = next(csv.DictReader(io.StringIO(header + line)))
-            if row["name"] in names:  # not an aggregate (_mean, _median, ...): those are recomputed here
-                found.setdefault(row["name"], []).append(float(row["ns_per_body_step"]))
-                done += 1
-                progress.show(stage, done, expected, row["name"], started)
-    if p.returncode != 0:
-        fail(f"{os.path.basename(bench)} failed with exit {p.returncode}")
-    missing = [n for n in names if n not in found]
-    if missing:
-        fail(f"the benchmark did not report {', '.join(missing)}")
-    return found
+    with tempfile.TemporaryFile("w+", errors="replace") as err, \
+            subprocess.Popen(command, stdout=subprocess.PIPE, stderr=err, text=True, errors="replace") as p:
+        hung = []
+
+        def kill():
+            hung.append(True)
+            p.kill()
+
+        timer = threading.Timer(timeout, kill)  # a hang is killed, and named below
+        timer.start()
+        try:
+            header = None
+            for line in p.stdout:
+                if line.startswith("name,"):
+                    header = line
+                    continue
+                if header is None:
+                    continue
+                row = next(csv.DictReader(io.StringIO(header + line)))
+                if row["name"] in names:  # not an aggregate (_mean, _median, ...): those are recomputed here
+                    found.setdefault(row["name"], []).append(float(row["ns_per_body_step"]))
+                    on_row(row["name"])
+            p.wait()
+        finally:
+            timer.cancel()
+        err.seek(0)
+        failure = (None if p.returncode == 0 else f"{os.path.basename(bench)} ran past {timeout:g} s" if hung
+                   else why(os.path.basename(bench), p.returncode, err.read()))
+    return found, failure
+
+
+def bench_table(bench, plugin_args, names, repetitions, progress, stage, timeout, failed):
+    """Every benchmark of `names`: name -> its repetitions (ns per body-step). When the process
+    fails, the benchmarks it did not report are run again one process each; a scheme whose own
+    process fails goes into `failed` (scheme -> why) and out of the table."""
+    expected, done, started = len(names) * repetitions, [0], time.monotonic()
+
+    def on_row(name):
+        done[0] += 1
+        progress.show(stage, done[0], expected, name, started)
+
+    found, failure = bench_process(bench, plugin_args, names, repetitions, timeout, on_row)
+    missing = [n for n in names if len(found.get(n, [])) < repetitions]
+    if failure is None and missing:
+        failure = f"the benchmark did not report {' '.join(missing)}"
+    if failure is None:
+        return found
+    for name in missing:
+        alone, failure = bench_process(bench, plugin_args, [name], repetitions, timeout, on_row)
+        if failure is None and len(alone.get(name, [])) < repetitions:
+            failure = f"the benchmark did not report {name}"
+        if failure is None:
+            found[name] = alone[name]
+        elif name.startswith("load_store/"):
+            fail(failure)
+        else:
+            failed.setdefault(name.split("/")[1], failure)
+    return {n: v for n, v in found.items() if n == "load_store/1000000" or n.split("/")[1] not in failed}
 
 
 def main():
@@ -184,7 +255,11 @@ def main():
     parser.add_argument("--quiet", action="store_true", help="no progress")
     parser.add_argument("--plugin", action="append", default=[], metavar="PATH", help="a plug-in's schemes too")
     parser.add_argument("--no-public", action="store_true", help=f"without BUILD_DIR/{PUBLIC_COUNTERPARTS}")
+    parser.add_argument("--schemes", metavar="A,B", help="only these schemes (and direct, and their public counterparts)")
+    parser.add_argument("--timeout", type=float, default=300.0, metavar="S", help="a scheme's process is stopped after S s")
     args = parser.parse_args()
+    if not args.timeout > 0:
+        fail(f"--timeout must be positive, got {args.timeout:g}")
     bench, driver = os.path.join(args.build, "rotbench_bench"), os.path.join(args.build, "rotbench_step_driver")
     for tool in (bench, driver):
         if not os.access(tool, os.X_OK):
@@ -196,9 +271,19 @@ def main():
     if not args.no_public and os.path.exists(public):
         plugins.append(public)
     plugin_args = [a for p in plugins for a in ("--plugin", os.path.abspath(p))]
-    schemes = run([driver, *plugin_args, "--list"]).split()
+    try:
+        schemes = run([driver, *plugin_args, "--list"], args.timeout).split()
+    except Failed as e:
+        fail(str(e))
     if "direct" not in schemes:
         fail("no scheme `direct` registered: the ratios are to it")
+    if args.schemes is not None:
+        wanted = set(args.schemes.split(",")) | {"direct"}
+        unknown = sorted(wanted - set(schemes))
+        if unknown:
+            fail(f"--schemes: no scheme {', '.join(unknown)} (rotbench_step_driver --list names them)")
+        schemes = [s for s in schemes if s in wanted or s.split("__")[0] in wanted]
+    failed = {}  # scheme -> why it could not be costed
     progress = Progress(args.quiet)
     os.makedirs(args.out, exist_ok=True)
 
@@ -206,27 +291,41 @@ def main():
         sizes = [(1, 2000), (1000, 20)] if args.thorough else [(1, 500), (1000, 5)]
         counts, started = {}, time.monotonic()
         with concurrent.futures.ThreadPoolExecutor(max_workers=os.cpu_count() or 1) as pool:
-            jobs = {pool.submit(count_instructions, driver, plugin_args, s, sizes, tmp): s for s in schemes}
-            for job in concurrent.futures.as_completed(jobs):
-                counts[jobs[job]] = job.result()
-                progress.show("instruction counts", len(counts), len(schemes), jobs[job], started)
+            jobs = {pool.submit(count_instructions, driver, plugin_args, s, sizes, tmp, args.timeout): s for s in schemes}
+            for done, job in enumerate(concurrent.futures.as_completed(jobs), start=1):
+                try:
+                    counts[jobs[job]] = job.result()
+                except Failed as e:
+                    failed[jobs[job]] = str(e)
+                progress.show("instruction counts", done, len(schemes), jobs[job], started)
+    if "direct" in failed:
+        fail(f"direct could not be costed: {failed['direct']}")
+    schemes = [s for s in schemes if s not in failed]
     alone = {s: counts[s][0] for s in schemes}
     batched_i = {s: counts[s][1][0] for s in schemes}
 
     size = {s: 100000 if alone[s][0] > SLOW_INSTRUCTIONS else 1000000 for s in schemes}
-    names = ["load_store/1000000"] + [f"{kind}/{s}/{size[s]}" for s in schemes for kind in ("batched", "one_at_a_time")]
+    def names():  # of the schemes not failed so far
+        return ["load_store/1000000"] + [f"{kind}/{s}/{size[s]}" for s in schemes if s not in failed
+                                         for kind in ("batched", "one_at_a_time")]
+
+    def table(repetitions, stage):
+        return bench_table(bench, plugin_args, names(), repetitions, progress, stage, args.timeout, failed)
+
     tables = []
     if args.thorough:
         halves = [{}, {}]
         for k in range(10):
-            part = bench_table(bench, plugin_args, names, 3, progress, f"timing, process {k + 1} of 10,")
-            for name, values in part.items():
+            for name, values in table(3, f"timing, process {k + 1} of 10,").items():
                 halves[k % 2].setdefault(name, []).extend(values)
         tables = halves
     else:
         for k in range(2):
-            tables.append(bench_table(bench, plugin_args, names, 2, progress, f"timing, table {k + 1} of 2,"))
-    pooled = {n: tables[0][n] + tables[1][n] for n in names}
+            tables.append(table(2, f"timing, table {k + 1} of 2,"))
+    if "direct" in failed:
+        fail(f"direct could not be costed: {failed['direct']}")
+    schemes = [s for s in schemes if s not in failed]
+    pooled = {n: tables[0][n] + tables[1][n] for n in names()}
 
     def least(table, kind, s):
         return min(table[f"{kind}/{s}/{size[s]}"])
@@ -251,7 +350,7 @@ def main():
     floor = min(pooled["load_store/1000000"])
     target = os.path.join(args.out, "cost.csv")
     mode = "thorough" if args.thorough else "quick"
-    rows = [["load_store", 1000000, floor, spread(pooled["load_store/1000000"])] + [""] * (len(COLUMNS) - 5) + [mode]]
+    rows = [["load_store", 1000000, floor, spread(pooled["load_store/1000000"])] + [""] * (len(COLUMNS) - 6) + [mode, ""]]
     direct_ns = min(pooled[f"batched/direct/{size['direct']}"])
     for s in sorted(schemes):
         b, a = min(pooled[f"batched/{s}/{size[s]}"]), min(pooled[f"one_at_a_time/{s}/{size[s]}"])
@@ -260,7 +359,9 @@ def main():
                      floor / b if size[s] == 1000000 else "", differ(speedup, s), differ(ns_ratio, s)]
                     + ([counterpart[s], public_ratio(pooled, s, counterpart[s]),
                         public_ratio(pooled, s, counterpart[s], "one_at_a_time"), differ(public_ratio, s, counterpart[s])]
-                       if s in counterpart else ["", "", "", ""]) + [mode])
+                       if s in counterpart else ["", "", "", ""]) + [mode, ""])
+    for s in sorted(failed):
+        rows.append([s] + [""] * (len(COLUMNS) - 3) + [mode, failed[s]])
     fd, temporary = tempfile.mkstemp(dir=args.out, prefix=".cost.csv.")  # beside the target: os.replace is atomic
     try:
         with os.fdopen(fd, "w", newline="") as f:

@@ -1,6 +1,7 @@
 #include "reports/cost_table.hpp"
 
 #include "harness/io/output_files.hpp"
+#include "reports/escape.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -62,11 +63,20 @@ std::string cost_section(const std::filesystem::path& dir) {
                      "The report ranks schemes by `ns_per_step` alone (section Verdicts). The figures here are of other "
                      "kinds and appear only here: the time per body-step of 1e6 bodies stepped together, and instruction "
                      "counts.\n\n";
-    const auto rows = read_rows(dir);
+    auto rows = read_rows(dir);
     if (!rows) {
         return md + "No cost table here: `benchmarks/cost.py BUILD " + dir.string() + "` measures it and "
                     "`rotbench report " + dir.string() + "` then includes it (README \"Speed\").\n\n";
     }
+    // A scheme whose process crashed, threw or hung has only its id and `failure`: named once, below the tables.
+    std::string not_costed;
+    for (auto it = rows->begin(); it != rows->end();)
+        if (it->count("failure") && !it->at("failure").empty()) {
+            not_costed += fmt::format("{}`{}` ({})", not_costed.empty() ? "" : ", ", markdown_cell((*it)["scheme"]), markdown_cell(it->at("failure")));
+            it = rows->erase(it);
+        } else {
+            ++it;
+        }
     const bool thorough = !rows->empty() && rows->front().count("mode") && rows->front().at("mode") == "thorough";
     md += fmt::format(
         "*Batched 1e6-body time*: each scheme stepping 1e6 bodies with random states and torques read from memory "
@@ -133,6 +143,7 @@ std::string cost_section(const std::filesystem::path& dir) {
                             : " The machine's noise exceeds 3 % on the ratios of " + noisy + ": read their figures as that uncertain.";
     }
     md += " Instruction counts are exact: two counts of the same binary agree to the instruction.\n\n";
+    if (!not_costed.empty()) md += "Not costed, their process having failed (the others were costed without them): " + not_costed + ".\n\n";
     return md;
 }
 

@@ -1,7 +1,8 @@
 # The speed tools take plug-ins as the harness does (benchmarks/plugin_args.hpp): a plug-in's
 # scheme is listed, counted and benchmarked like a built-in one; a bad plug-in is one line and
-# exit 2, and benchmarks/cost.py then writes no cost table.
-# Run as: cmake -DBUILD_DIR=... -DPLUGIN=... -DSOURCE_DIR=... -DOUT=... -P speed_tools.cmake
+# exit 2, and benchmarks/cost.py then writes no cost table; a scheme that crashes, throws or
+# hangs is named as not costed and the others are costed.
+# Run as: cmake -DBUILD_DIR=... -DPLUGIN=... -DCRASHING=... -DSOURCE_DIR=... -DOUT=... -P speed_tools.cmake
 function(expect what code pattern)
   execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
   if(NOT rc STREQUAL "${code}")
@@ -29,3 +30,25 @@ expect("the cost table refuses a missing plug-in" 2 "^cost: [^\n]*no such file\n
 if(EXISTS ${OUT}/cost.csv)
   message(FATAL_ERROR "cost.py wrote a cost table after a bad plug-in")
 endif()
+
+# valgrind cannot run an AddressSanitizer build (the sanitizer step's): what follows needs it.
+if(CXX_FLAGS MATCHES "-fsanitize=address")
+  return()
+endif()
+# Crashing schemes: in callgrind's count (segfault, throw, hang past --timeout) and in the
+# benchmark only, after it has timed others. direct is costed all the same. The timeout, 15 s,
+# is some five times callgrind's count of direct here on a loaded machine.
+file(REMOVE_RECURSE ${OUT})
+expect("the cost table costs the others when a scheme crashes, throws or hangs" 0 ""
+       ${SOURCE_DIR}/benchmarks/cost.py --quiet --no-public --plugin ${CRASHING} --timeout 15
+       --schemes bad_segfault,bad_throw42,bad_hang,bad_in_benchmark ${BUILD_DIR} ${OUT})
+file(READ ${OUT}/cost.csv csv)
+foreach(expected "\ndirect,1000000,[0-9.]+,[^\n]*,quick,\n"
+                 "\nbad_segfault,,[,]*quick,valgrind killed by signal 11\n"
+                 "\nbad_throw42,,[,]*quick,valgrind killed by signal 6\n"
+                 "\nbad_hang,,[,]*quick,valgrind ran past 15 s\n"
+                 "\nbad_in_benchmark,,[,]*quick,rotbench_bench killed by signal 11\n")
+  if(NOT csv MATCHES "${expected}")
+    message(FATAL_ERROR "cost.csv does not match '${expected}':\n${csv}")
+  endif()
+endforeach()

@@ -23,12 +23,13 @@ std::filesystem::path fresh_dir(const std::string& name) {
 const char* cost_csv =
     "scheme,bodies,ns_batched,ns_batched_spread,ns_alone,ns_alone_spread,speedup,instr_batched,instr_alone,ns_ratio_to_direct,"
     "instr_ratio_to_direct,libm_instr_alone,memory_share,speedup_runs_differ,ns_ratio_runs_differ,public,public_ratio_batched,"
-    "public_ratio_alone,public_ratio_runs_differ,mode\n"
-    "load_store,1000000,10,0.01,,,,,,,,,,,,,,,,quick\n"
-    "direct,1000000,20,0.02,80,0.03,4,150,600,1,1,150,0.5,0.012,0,direct__somecode,2.5,0.8,0.015,quick\n"
-    "direct__somecode,1000000,50,0.02,64,0.03,1.28,400,480,2.5,2.6667,0,0.2,0.01,0.01,,,,,quick\n"
-    "exact_splitting,100000,2000,0.01,2000,0.01,1,8000,8000,100,53.3333,400,,0.04,0.01,,,,,quick\n"
-    "zvw,1000000,40,0.05,120,0.01,3,200,900,2,1.3333,300,0.25,0.004,0.021,,,,,quick\n";
+    "public_ratio_alone,public_ratio_runs_differ,mode,failure\n"
+    "load_store,1000000,10,0.01,,,,,,,,,,,,,,,,quick,\n"
+    "direct,1000000,20,0.02,80,0.03,4,150,600,1,1,150,0.5,0.012,0,direct__somecode,2.5,0.8,0.015,quick,\n"
+    "direct__somecode,1000000,50,0.02,64,0.03,1.28,400,480,2.5,2.6667,0,0.2,0.01,0.01,,,,,quick,\n"
+    "exact_splitting,100000,2000,0.01,2000,0.01,1,8000,8000,100,53.3333,400,,0.04,0.01,,,,,quick,\n"
+    "zvw,1000000,40,0.05,120,0.01,3,200,900,2,1.3333,300,0.25,0.004,0.021,,,,,quick,\n"
+    "bad_segfault,,,,,,,,,,,,,,,,,,,quick,rotbench_step_driver killed by signal 11\n";
 
 }  // namespace
 
@@ -50,6 +51,10 @@ TEST_CASE("the cost section shows for every scheme its times and instructions an
     // The public counterpart's row: its time over the scheme's, batched and alone.
     CHECK(md.find("| direct | `direct__somecode` | 2.50 | 0.80 | 1.5 % |") != std::string::npos);
     CHECK(md.find("| zvw | `") == std::string::npos);  // no counterpart, no row
+    // A scheme whose process failed: named once, with why, in no table.
+    CHECK(md.find("Not costed, their process having failed (the others were costed without them): `bad_segfault` "
+                  "(rotbench_step_driver killed by signal 11).") != std::string::npos);
+    CHECK(md.find("| bad_segfault |") == std::string::npos);
     // The report's rule for every table (issue 21): at most 7 columns.
     std::istringstream lines(md);
     for (std::string line; std::getline(lines, line);)
