@@ -34,7 +34,8 @@ std::string curve_script(const std::string& scene, double dt, const std::vector<
         const std::string file = "../series/" + series_file_name(r);
         const bool band = r.series_columns.size() == 4;  // x, mean, min, max: an ensemble's
         if (band) s += fmt::format("'{}' using 1:3:4 with filledcurves {} notitle, \\\n     ", file, series_colour(i));
-        s += fmt::format("'{}' using 1:2 with lines lw 1.8 {} title '{}{}'{}", file, series_colour(i), r.spec.scheme,
+        // Eight colours; past them the lines are dashed.
+        s += fmt::format("'{}' using 1:2 with lines lw 1.8 {} dt {} title '{}{}'{}", file, series_colour(i), 1 + i / 8, r.spec.scheme,
                          band ? fmt::format(" (mean of {:.0f})", r.value("ensemble_size")) : "", i + 1 < runs.size() ? ", \\\n     " : "\n");
     }
     return s;

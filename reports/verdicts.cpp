@@ -132,7 +132,7 @@ std::string cost_scene(const ResultSet& set) {
 }
 
 double energy_growth(const RunResult& r) {
-    if (r.series.size() < 4) return NAN;
+    if (!r.has_energy_series() || r.series.size() < 4) return NAN;
     const double half = 0.5 * r.series.back().at(0);
     double first = 0, second = 0;
     for (const auto& row : r.series) {
