@@ -61,10 +61,11 @@ TEST_CASE("granular scenes: the seed's three schemes on ensembles of the silo an
         CHECK(metric(runs, "silo_discharge", scheme, "mass_flow_rate") > 0.0);  // it discharged
         CHECK(std::isfinite(metric(runs, "silo_discharge", scheme, "mass_flow_rate_ci95")));
         // The servo holds the lid's stress, 27 kPa: its lag behind the sample's dilation is below 1 %
-        // (5 mm/s of shear, 0.2 m/s of lid per unit error); what is left is the stick-slip of a
-        // sample four stones wide, measured means 24.0-27.0 kPa. Within a fifth.
-        CHECK(std::abs(metric(runs, "direct_shear", scheme, "normal_stress_mean") - 27e3) < 0.2 * 27e3);
+        // (5 mm/s of shear, 0.2 m/s of lid per unit error). Sampled as step means the members read
+        // 26.5-27.0 kPa; read at single steps the lid's chatter aliased to 16 kPa. Within 5 %.
+        CHECK(std::abs(metric(runs, "direct_shear", scheme, "normal_stress_mean") - 27e3) < 0.05 * 27e3);
         CHECK(metric(runs, "direct_shear", scheme, "shear_stress_peak") > 0.0);
+        CHECK(metric(runs, "direct_shear", scheme, "escaped_stones") == 0.0);  // the walls hold every stone
         const double share = metric(runs, "direct_shear", scheme, "rotation_share");
         CHECK(share > 0.0);
         CHECK(share < 1.0);
