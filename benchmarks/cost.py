@@ -298,9 +298,14 @@ def main():
                 except Failed as e:
                     failed[jobs[job]] = str(e)
                 progress.show("instruction counts", done, len(schemes), jobs[job], started)
-    if "direct" in failed:
-        fail(f"direct could not be costed: {failed['direct']}")
-    schemes = [s for s in schemes if s not in failed]
+
+    def costed(schemes):
+        """The schemes not failed so far; stops when direct, the ratios' base, has failed."""
+        if "direct" in failed:
+            fail(f"direct could not be costed: {failed['direct']}")
+        return [s for s in schemes if s not in failed]
+
+    schemes = costed(schemes)
     alone = {s: counts[s][0] for s in schemes}
     batched_i = {s: counts[s][1][0] for s in schemes}
 
@@ -322,9 +327,7 @@ def main():
     else:
         for k in range(2):
             tables.append(table(2, f"timing, table {k + 1} of 2,"))
-    if "direct" in failed:
-        fail(f"direct could not be costed: {failed['direct']}")
-    schemes = [s for s in schemes if s not in failed]
+    schemes = costed(schemes)
     pooled = {n: tables[0][n] + tables[1][n] for n in names()}
 
     def least(table, kind, s):

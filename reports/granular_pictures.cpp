@@ -9,7 +9,6 @@
 #include <cmath>
 #include <fmt/format.h>
 #include <map>
-#include <numeric>
 
 namespace rotbench {
 namespace {

@@ -47,7 +47,9 @@ struct RunResult {
     std::vector<double> timing_samples;
 
     bool has(const std::string& name) const;
-    bool has_energy_series() const { return series_columns.size() >= 2 && series_columns[1] == "energy_error"; }
+    bool has_energy_series() const { return is_energy_series(series_columns); }
+    // An energy series' columns (t, energy_error, ...), not a granular curve's.
+    static bool is_energy_series(const std::vector<std::string>& columns) { return columns.size() >= 2 && columns[1] == "energy_error"; }
     double value(const std::string& name) const;  // NaN when absent
 };
 

@@ -1,5 +1,6 @@
 #include "harness/io/run_record.hpp"
 
+#include "harness/io/csv.hpp"
 #include "harness/io/results_csv.hpp"
 #include "harness/io/series_csv.hpp"
 
@@ -67,8 +68,8 @@ RunRecords parse_run_records(const std::string& text, const std::string& name) {
         if (parsed.size() != 1) throw InputError(name + ": a record that does not hold one run");
         if (lengths[2] > 0 || lengths[3] > 0) {  // again, with the series and snapshots under the names the run gives them
             const std::string series = text.substr(body + offsets[2], lengths[2]);
-            const std::string head = series.substr(0, series.find('\n'));  // RunResult::has_energy_series, read off the header
-            const bool energy = head == "t,energy_error" || head.rfind("t,energy_error,", 0) == 0;
+            const auto header = parse_csv(series.substr(0, series.find('\n') + 1), name);
+            const bool energy = !header.empty() && RunResult::is_energy_series(header.front().fields);
             std::map<std::string, std::string> files;
             if (lengths[2] > 0) files["series/" + series_file_name(parsed.front().spec, energy)] = series;
             if (lengths[3] > 0) files["snapshots/" + snapshot_file_name(parsed.front().spec)] = text.substr(body + offsets[3], lengths[3]);

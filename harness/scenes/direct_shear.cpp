@@ -211,8 +211,7 @@ private:
         }
         std::vector<std::vector<double>> snapshots() const override {
             std::vector<std::vector<double>> rows;
-            if (!samples_.empty())
-                for (const Sphere& s : scene_.system_->world_spheres(last_)) rows.push_back({last_t_, s.centre.x(), s.centre.y(), s.centre.z(), s.radius});
+            if (!samples_.empty()) scene_.add_snapshot(last_t_, last_, rows);
             return rows;
         }
 

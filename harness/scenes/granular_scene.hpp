@@ -53,6 +53,10 @@ protected:
         system_ = std::make_unique<ClusterSystem>(ballast_shapes(params.positive("density")), material_, friction_, Vec3(0.0, 0.0, -g));
     }
     std::size_t cluster_count() const { return static_cast<std::size_t>(params.number("clusters")); }
+    // The spheres of every stone at time t, as SceneProbe::snapshots rows {t, x, y, z, radius}.
+    void add_snapshot(double t, const Bodies& b, std::vector<std::vector<double>>& rows) const {
+        for (const Sphere& s : system_->world_spheres(b)) rows.push_back({t, s.centre.x(), s.centre.y(), s.centre.z(), s.radius});
+    }
     RandomStream random() const { return RandomStream(static_cast<std::uint64_t>(params.number("seed"))); }
     // The largest distance of a stone's surface from its centre of mass.
     double largest_reach() const {

@@ -119,7 +119,7 @@ private:
             last_ = b;  // the heap is measured on the last sample, at the end
             // Pictures: at the opening, halfway from it to the end, and (snapshots()) at the end.
             const double halfway = 0.5 * (scene_.fill_time_ + scene_.t_end());
-            if (pictured_ == 0 || (pictured_ == 1 && t >= halfway)) add_picture(t, b, pictures_), ++pictured_;
+            if (pictured_ == 0 || (pictured_ == 1 && t >= halfway)) scene_.add_snapshot(t, b, pictures_), ++pictured_;
         }
         // Every tenth sample (10 ms): enough for the picture, and the same times in every run of one dt.
         Curve curve() const override {
@@ -129,7 +129,7 @@ private:
         }
         std::vector<std::vector<double>> snapshots() const override {
             std::vector<std::vector<double>> rows = pictures_;
-            if (!curve_.empty()) add_picture(curve_.back().first + scene_.fill_time_, last_, rows);
+            if (!curve_.empty()) scene_.add_snapshot(curve_.back().first + scene_.fill_time_, last_, rows);
             return rows;
         }
         std::vector<std::pair<std::string, double>> metrics() const override {
@@ -181,10 +181,6 @@ private:
                 if (std::isfinite(a)) sum += a, ++directions;
             }
             return directions ? sum / directions : NAN;
-        }
-
-        void add_picture(double t, const Bodies& b, std::vector<std::vector<double>>& rows) const {
-            for (const Sphere& s : scene_.system_->world_spheres(b)) rows.push_back({t, s.centre.x(), s.centre.y(), s.centre.z(), s.radius});
         }
 
         const SiloDischarge& scene_;
