@@ -90,12 +90,12 @@ std::vector<LargestDt> largest_dts(const ResultSet& set, const std::vector<Order
             LargestDt a = largest_dt(runs, o, tolerance);
             const SceneInfo& scene = set.scene(o.scene);
             for (const auto& s : stability)  // the scene's own limit, at its damping ratio
-                if (scene.stability_scene && s.scene == o.scene && s.scheme == o.scheme && s.omega_max == 0 && s.zeta == scene.zeta)
+                if (s.failure.empty() && scene.stability_scene && s.scene == o.scene && s.scheme == o.scheme && s.omega_max == 0 && s.zeta == scene.zeta)
                     a.dt_limit = s.dt_empirical, a.limit_from = fmt::format("stability study, zeta = {:g}", s.zeta);
             if (a.limit_from.empty()) {  // a spin limit: the least dt x w_max measured on fast_spin, over this scene's |w|
                 double least = NAN;
                 for (const auto& s : stability)
-                    if (s.scheme == o.scheme && s.omega_max > 0 && !(s.dt_empirical * s.omega_max >= least))
+                    if (s.failure.empty() && s.scheme == o.scheme && s.omega_max > 0 && !(s.dt_empirical * s.omega_max >= least))
                         least = s.dt_empirical * s.omega_max;
                 if (!std::isnan(least))
                     a.dt_limit = least / omega_ref, a.limit_from = fmt::format("fast_spin: dt w_max = {:.3g}, over |w| = {:.3g} rad/s", least, omega_ref);

@@ -76,8 +76,16 @@ std::string spectral_radius_plots(const std::vector<SpectralCurve>& curves, cons
         std::string data;
         std::vector<std::string> schemes;
         double dt_peng = 0;
+        std::string failed;
         for (const auto& c : curves) {
             if (c.scene != id) continue;
+            // No finite point: left out of the plot (gnuplot stops at a panel with nothing to draw), named below it.
+            const bool bounded = std::any_of(c.points.begin(), c.points.end(), [](const auto& p) { return std::isfinite(p.second); });
+            if (!c.failure.empty() || !bounded) {
+                failed += fmt::format("- `{}`: no spectral curve; {}\n", c.scheme,
+                                      c.failure.empty() ? "its step map is unbounded (it threw or blew up) at every dt" : c.failure);
+                continue;
+            }
             for (const auto& [dt, rho] : c.points) data += fmt::format("{} {}\n", format_number(dt), format_number(rho));
             data += "\n\n";
             schemes.push_back(c.scheme);
@@ -104,6 +112,7 @@ std::string spectral_radius_plots(const std::vector<SpectralCurve>& curves, cons
                                               fmt::format("plots/spectral_radius_{}.svg", id));
         md += drawn.ok ? fmt::format("![spectral radius, {0}](plots/spectral_radius_{0}.svg)\n\n", id)
                        : fmt::format("(plot not drawn: {})\n\n", drawn.why);
+        if (!failed.empty()) md += failed + "\n";
     }
     return md;
 }
@@ -122,9 +131,12 @@ std::string stability_section(const std::vector<StabilityRow>& rows, const Resul
                           r.omega_max > 0 ? fmt::format("w {:g} rad/s", r.omega_max) : fmt::format("zeta {:g}", r.zeta), r.scheme,
                           stability_kind(r), number(r.dt_empirical), number(r.dt_amplification), number(r.dt_peng));
     md += "\n";
+    for (const auto& r : rows)
+        if (!r.failure.empty()) md += fmt::format("- `{}` on `{}` failed: {}\n", r.scheme, r.scene, r.failure);
+    md += "\n";
     std::map<std::string, std::vector<const StabilityRow*>> by_scene;
     for (const auto& r : rows)
-        if (r.omega_max == 0) by_scene[r.scene].push_back(&r);
+        if (r.omega_max == 0 && r.failure.empty()) by_scene[r.scene].push_back(&r);
     for (const auto& [scene, list] : by_scene) md += limit_plot("stability_", scene, list, set, dir);
     return md;
 }
@@ -159,9 +171,15 @@ std::string stability_summary(const std::vector<StabilityRow>& rows, const Resul
             md += "| scheme | kind | measured dt w_max (rad) | Peng dt w_max (rad) | measured / Peng |\n|---|---|---:|---:|---:|\n";
             for (const auto& scheme : schemes_of(rows)) {
                 const StabilityRow* least = nullptr;  // the smallest dt w_max over the spin rates
-                for (const auto* r : list)
-                    if (r->scheme == scheme && (!least || r->dt_empirical * r->omega_max < least->dt_empirical * least->omega_max)) least = r;
-                if (!least) continue;
+                bool failed = false;
+                for (const auto* r : list) {
+                    failed = failed || (r->scheme == scheme && !r->failure.empty());
+                    if (r->scheme == scheme && r->failure.empty() && (!least || r->dt_empirical * r->omega_max < least->dt_empirical * least->omega_max)) least = r;
+                }
+                if (!least) {
+                    if (failed) md += fmt::format("| {} | failed | — | — | — |\n", scheme);
+                    continue;
+                }
                 const double m = least->dt_empirical * least->omega_max, p = least->dt_peng * least->omega_max;
                 md += fmt::format("| {} | {} | {} | {:.4g} | {} |\n", scheme, stability_kind(*least),
                                   std::isinf(m) ? std::string("none found") : fmt::format("{:.4g}", m), p,
@@ -186,6 +204,7 @@ std::string stability_summary(const std::vector<StabilityRow>& rows, const Resul
                     const auto it = std::find_if(list.begin(), list.end(), [&](const StabilityRow* r) { return r->scheme == scheme && r->zeta == z; });
                     if (it == list.end()) { line += " — |"; continue; }
                     any = true;
+                    if (!(*it)->failure.empty()) { line += " failed |"; continue; }
                     const double ratio = (*it)->dt_empirical / (*it)->dt_peng;
                     const std::string kind = stability_kind(**it) == "sharp" ? "" : " (" + stability_kind(**it) + ")";
                     line += std::isinf(ratio) ? " ∞" + kind + " |"
@@ -195,7 +214,10 @@ std::string stability_summary(const std::vector<StabilityRow>& rows, const Resul
                 if (any) md += line + "\n";
             }
             md += "\nMeasured / Peng; **bold** where Peng's dt is above the measured limit (unsafe); (weak): see above.\n\n";
-            md += limit_plot("report_stability_", scene, list, set, dir);
+            std::vector<const StabilityRow*> finished;
+            for (const auto* r : list)
+                if (r->failure.empty()) finished.push_back(r);
+            md += limit_plot("report_stability_", scene, finished, set, dir);
         }
         md += "\n";
     }

@@ -110,16 +110,21 @@ std::string energy_cell(const ResultSet& set, const std::string& scheme) {
 
 std::string stability_cell(const std::vector<StabilityRow>& stability, const std::string& scheme) {
     double lo = INFINITY, hi = 0;
-    std::string weak;
+    std::string weak, failed;
     for (const auto& s : stability) {
         if (s.scheme != scheme || s.omega_max != 0) continue;
+        if (!s.failure.empty()) {
+            failed += fmt::format("{}{} ζ = {:g}", failed.empty() ? "" : ", ", s.scene, s.zeta);
+            continue;
+        }
         const double ratio = s.dt_empirical / s.dt_peng;
         lo = std::min(lo, ratio), hi = std::max(hi, ratio);
         if (stability_kind(s) == "weak") weak += fmt::format("{}{} ζ = {:g}", weak.empty() ? "" : ", ", s.scene, s.zeta);
     }
-    if (!(hi > 0)) return "—";
+    const std::string not_measured = failed.empty() ? "" : " (failed: " + failed + ")";
+    if (!(hi > 0)) return "—" + not_measured;
     const std::string r = hi - lo < 0.005 ? fmt::format("{:.2f}", lo) : fmt::format("{:.3g}–{:.3g}", lo, hi);
-    return weak.empty() ? r : r + " (weak: " + weak + ")";
+    return (weak.empty() ? r : r + " (weak: " + weak + ")") + not_measured;
 }
 
 }  // namespace

@@ -2,12 +2,15 @@
 // aborts, exits, throws what is not a std::exception, hangs, exhausts memory or leaves a
 // process behind fails (or ends) its own runs, named, and the sweep goes on; an isolated run gives the numbers an in-process run
 // gives; a signal stops a sweep whose plug-in hangs at once.
+#include "harness/analysis/stability_study.hpp"
 #include "harness/engine/isolation.hpp"
+#include "harness/io/stability_csv.hpp"
 #include "tests/cli_helpers.hpp"
 
 #include <catch2/catch.hpp>
 #include <cctype>
 #include <chrono>
+#include <cmath>
 #include <csignal>
 #include <map>
 #include <thread>
@@ -155,4 +158,51 @@ TEST_CASE("isolation: SIGINT or SIGTERM stops a sweep whose plug-in hangs, and k
         reap.worker = -1;
         fs::remove_all(dir);
     }
+}
+
+TEST_CASE("isolation: `stability` records a plug-in that crashes or hangs as a failed case, and measures the rest") {
+    const fs::path dir = fresh_dir("isolation_stability");
+    // --run-timeout 3: bad_hang's case and its spectral curve each wait that long.
+    const Cli r = cli({"stability", "--plugin", PLUGIN_CRASHING, "--schemes", "direct,bad_segfault,bad_hang", "--scenes",
+                       "sphere_pair,fast_spin", "--zeta", "0", "--omega-max", "100", "--run-timeout", "3", "--jobs", "2", "--quiet",
+                       "--out", dir.string()});
+    INFO(r.err);
+    REQUIRE(r.status == 0);
+    const auto rows = read_stability(dir);  // stability.csv and stability_spin.csv, read back as `report` reads them
+    std::map<std::string, int> failed, measured;
+    for (const auto& row : rows) {
+        INFO(row.scheme << " on " << row.scene);
+        CHECK(row.dt_peng > 0);  // the scene's own prediction, whatever the scheme did
+        if (row.scheme == "direct") {
+            CHECK(stability_kind(row) == "sharp");
+            CHECK(row.dt_empirical > 0);
+            ++measured[row.scene];
+        } else {
+            CHECK(stability_kind(row) == "failed");
+            CHECK(std::isnan(row.dt_empirical));
+            ++failed[row.scene];
+        }
+    }
+    CHECK(measured == std::map<std::string, int>{{"fast_spin", 1}, {"sphere_pair", 1}});
+    CHECK(failed == std::map<std::string, int>{{"fast_spin", 2}, {"sphere_pair", 2}});
+    const std::string md = read(dir / "stability.md");
+    // Under AddressSanitizer a SIGSEGV becomes ASan's report and exit status 1.
+    CHECK_THAT(md, Catch::Contains("`bad_segfault` on `sphere_pair` failed: ") &&
+                       (Catch::Contains("signal 11") || Catch::Contains("exited with status 1")));
+    CHECK_THAT(md, Catch::Contains("`bad_hang` on `fast_spin` failed: exceeded the run time limit of 3 s"));
+    CHECK_THAT(md, Catch::Contains("`bad_hang`: no spectral curve; exceeded the run time limit of 3 s"));
+    CHECK(fs::exists(dir / "plots" / "spectral_radius_sphere_pair.svg"));  // drawn for direct, without the failed curves
+    fs::remove_all(dir);
+}
+
+TEST_CASE("isolation: `advise` does not recommend a plug-in that crashes, says why, and advises the other schemes") {
+    const fs::path dir = fresh_dir("isolation_advise");
+    const Cli r = cli({"advise", "--plugin", PLUGIN_CRASHING, "--schemes", "direct,bad_sound_segfault", "--inertia", "1,2,3",
+                       "--mass", "1", "--stiffness", "1e4", "--tolerance", "1e-3", "--out", dir.string()});
+    INFO(r.err);
+    REQUIRE(r.status == 0);
+    const std::string json = read(dir / "advice.json");
+    CHECK_THAT(json, Catch::Contains("\"scheme\": \"direct\""));
+    CHECK_THAT(r.out, Catch::Contains("bad_sound_segfault: its stability search failed: "));
+    fs::remove_all(dir);
 }

@@ -4,6 +4,7 @@
 #include "harness/analysis/order_fit.hpp"
 #include "harness/analysis/stability.hpp"
 #include "harness/analysis/stability_study.hpp"
+#include "harness/engine/isolation.hpp"
 #include "harness/engine/parallel.hpp"
 #include "harness/engine/run.hpp"
 #include "harness/scenes/stability_probe.hpp"
@@ -28,12 +29,23 @@ struct Outcome {
 };
 
 Outcome advise_one(const Scene& scene, const ParamOverrides& params, double t_end, double tolerance, const std::string& scheme,
-                   bool verify) {
+                   bool verify, int jobs) {
     const auto& probe = dynamic_cast<const StabilityProbe&>(scene);
     Outcome o;
     o.r.scheme = scheme;
-    const StabilityCriterion criterion{stability_horizon_periods * probe.period(), stability_growth};
-    const double limit = empirical_limit(scene, scheme, probe.predicted_limit(), criterion);
+    // A plug-in's search and runs go to worker processes (harness/engine/isolation.hpp): one that
+    // crashes or hangs is not recommended, with the reason, and the other schemes are still advised.
+    const bool in_worker = isolated(scheme);
+    const IsolationLimits limits{0, isolation_memory(jobs)};
+    double limit = NAN;
+    if (!in_worker) {
+        const StabilityCriterion criterion{stability_horizon_periods * probe.period(), stability_growth};
+        limit = empirical_limit(scene, scheme, probe.predicted_limit(), criterion);
+    } else {
+        const RunResult search = run_isolated({scene_id, scheme, 0.0, t_end, params, RunKind::stability, false}, {}, limits);
+        if (!search.failure.empty()) return {false, o.r, "its stability search failed: " + search.failure};
+        limit = search.value("dt_empirical");
+    }
     o.r.dt_stability = limit;
     if (!(limit > 0)) return {false, o.r, "no stable dt found"};
     const double dt0 = advice_safety * (std::isfinite(limit) ? limit : probe.predicted_limit());
@@ -41,7 +53,7 @@ Outcome advise_one(const Scene& scene, const ParamOverrides& params, double t_en
     const auto run_at = [&](double dt, bool timed) {
         RunSpec spec{scene_id, scheme, dt, t_end, params};
         spec.timed = timed;
-        return run_one(spec);
+        return in_worker ? run_isolated(spec, {}, limits) : run_one(spec);
     };
     std::vector<RunResult> ladder;
     std::vector<OrderPoint> points;
@@ -52,6 +64,8 @@ Outcome advise_one(const Scene& scene, const ParamOverrides& params, double t_en
         if (stable(r) && relative_error(r) < advice_asymptotic_error) points.push_back({r.spec.dt, relative_error(r)});
         if (std::isfinite(r.value("ns_per_step"))) ns.push_back(r.value("ns_per_step"));
     }
+    if (in_worker && !ladder.front().failure.empty() && ladder.front().failure.rfind("blew up", 0) != 0)
+        return {false, o.r, "its run failed: " + ladder.front().failure};  // crashed, hung or threw in its worker
     if (!stable(ladder.front()))  // the search's horizon is the criterion's; a run may still fail
         return {false, o.r, fmt::format("unstable at {:.3g} s below its measured limit {:.3g} s", dt0, limit)};
     // No rung meets the tolerance: extrapolate from the finest with the observed order, run
@@ -138,7 +152,7 @@ Advice advise(const Particle& particle, double tolerance, const std::vector<std:
         else a.not_recommended.push_back({s, "a control (sound = false): never recommended"});
     }
     std::vector<Outcome> outcomes(sound.size());
-    parallel_for(sound.size(), jobs, [&](std::size_t i) { outcomes[i] = advise_one(*scene, a.params, a.t_end, tolerance, sound[i], verify); });
+    parallel_for(sound.size(), jobs, [&](std::size_t i) { outcomes[i] = advise_one(*scene, a.params, a.t_end, tolerance, sound[i], verify, jobs); });
     for (const auto& o : outcomes) {
         if (o.recommended) a.recommendations.push_back(o.r);
         else a.not_recommended.push_back({o.r.scheme, o.why});

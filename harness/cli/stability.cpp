@@ -3,7 +3,9 @@
 #include "harness/analysis/result_set.hpp"
 #include "harness/analysis/stability_study.hpp"
 #include "harness/cli/outputs.hpp"
+#include "harness/cli/sweep_command.hpp"
 #include "harness/cli/verb.hpp"
+#include "harness/engine/interrupt.hpp"
 #include "harness/engine/parallel.hpp"
 #include "harness/io/output_files.hpp"
 #include "harness/io/parse.hpp"
@@ -27,6 +29,7 @@ public:
         command.add_option("--jobs", jobs_, "cases in parallel")->check(CLI::Range(1, max_jobs));
         command.add_flag("--overwrite", overwrite_, "replace results already in --out");
         command.add_flag("--quiet", quiet_, "no progress on stderr");
+        isolation_.add_to(command, "600 s for a case");
     }
     int run(const Invocation& how) override {
         const auto scenes = parse_id_list(scenes_, SceneRegistry::instance(), "scene");
@@ -35,14 +38,29 @@ public:
         const auto zetas = parse_nonnegative_list(zetas_, "--zeta");
         const auto omegas = parse_positive_list(omegas_, "--omega-max");
         check_stability_scenes(scenes);
+        RunOptions run_options;
+        isolation_.apply(run_options);
+        StabilityLimits limits;  // a plug-in's case in a worker: its default time limit is StabilityLimits's
+        if (run_options.run_timeout > 0) limits.seconds = run_options.run_timeout;
+        limits.megabytes = run_options.run_memory_mb;
         const OutputDir dir = OutputDir::open(out_, {"stability", "stability.csv", {"stability.csv", "stability_spin.csv", "stability.md"},
                                                      overwrite_});
         std::vector<StabilityRow> rows;
-        {  // the progress's status line is cleared when it goes, before the last line
-            // Every case weighs the same: each searches its limit over about as many steps.
-            Progress progress(how.err, Progress::mode_for(how.err, quiet_), "stability",
-                              std::vector<double>(stability_case_count(scenes, schemes, zetas, omegas), 1.0));
-            rows = stability_study(scenes, schemes, zetas, omegas, jobs_, &progress);
+        std::vector<SpectralCurve> curves;
+        {
+            // A signal stops the cases and kills the workers of plug-in schemes; nothing is written.
+            const InterruptGuard guard;
+            {  // the progress's status line is cleared when it goes, before the last line
+                // Every case weighs the same: each searches its limit over about as many steps.
+                Progress progress(how.err, Progress::mode_for(how.err, quiet_), "stability",
+                                  std::vector<double>(stability_case_count(scenes, schemes, zetas, omegas), 1.0));
+                rows = stability_study(scenes, schemes, zetas, omegas, jobs_, &progress, limits);
+            }
+            if (!interrupt_signal()) curves = spectral_radius_curves(scenes, schemes, limits);
+            if (const int signal = interrupt_signal()) {
+                how.err << "rotbench: stability interrupted; nothing written\n";
+                return signal > 0 ? 128 + signal : 1;
+            }
         }
         dir.write("stability.csv", stability_csv(rows));
         dir.write("stability_spin.csv", stability_spin_csv(rows));
@@ -50,7 +68,7 @@ public:
         for (const auto& id : schemes) families.schemes[id] = scheme_info(id);
         const std::string section = stability_section(rows, families, dir);
         dir.write("stability.md", "# rotbench stability\n\nCommand: `" + how.command_line + "`\n\n" + section +
-                                      spectral_radius_plots(spectral_radius_curves(scenes, schemes), families, dir));
+                                      spectral_radius_plots(curves, families, dir));
         how.out << "wrote " << (dir.path() / "stability.csv").string() << " and " << (dir.path() / "stability.md").string() << "\n";
         return 0;
     }
@@ -58,6 +76,7 @@ public:
 private:
     std::string scenes_ = "sphere_pair,ellipsoid_pair,fast_spin", schemes_, zetas_ = "0,0.1,0.3,0.5", omegas_ = "10,100,1000",
                 out_ = "rotbench-stability";
+    IsolationOptions isolation_;
     bool overwrite_ = false, quiet_ = false;
     int jobs_ = core_count();
 };

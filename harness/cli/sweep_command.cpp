@@ -15,9 +15,8 @@
 namespace rotbench {
 namespace fs = std::filesystem;
 
-void IsolationOptions::add_to(CLI::App& command) {
-    command.add_option("--run-timeout", run_timeout,
-                       "SECONDS: a plug-in's run is stopped after this long (default: ten times a slow step, and a minute)");
+void IsolationOptions::add_to(CLI::App& command, const std::string& timeout_default) {
+    command.add_option("--run-timeout", run_timeout, "SECONDS: a plug-in's run is stopped after this long (default: " + timeout_default + ")");
     command.add_option("--run-memory", run_memory, "MB: the memory a plug-in's run may take (default: half the machine over --jobs)")
         ->check(CLI::Range(64, 1 << 30));
 }

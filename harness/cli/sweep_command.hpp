@@ -34,7 +34,7 @@ struct SweepOutcome {
 struct IsolationOptions {
     std::string run_timeout;
     int run_memory = 0;
-    void add_to(CLI::App& command);
+    void add_to(CLI::App& command, const std::string& timeout_default = "ten times a slow step, and a minute");
     void apply(RunOptions& options) const;  // InputError for a bad --run-timeout
 };
 

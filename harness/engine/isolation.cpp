@@ -89,22 +89,16 @@ std::size_t isolation_memory(int jobs) {
     return static_cast<std::size_t>(std::max(1024.0, memory_bytes() / 2 / std::max(1, jobs) / (1 << 20)));
 }
 
-RunResult run_isolated(const RunSpec& spec, const RunOptions& options, const IsolationLimits& limits) {
-    RunResult failed{spec, {}, {}};
+WorkerOutput run_worker(const std::vector<std::string>& verb_arguments, double seconds, std::size_t megabytes) {
+    WorkerOutput result;
     const auto fail = [&](const std::string& why) {
-        failed.failure = why;
-        failed.metrics = {{"unstable", 1.0}};
-        return failed;
+        result.failure = why;
+        return result;
     };
-    const auto scene = scene_of(spec);
-    const double seconds = limits.seconds > 0 ? limits.seconds : default_timeout(spec, *scene);
-    const std::size_t megabytes = limits.megabytes > 0 ? limits.megabytes : isolation_memory(1);
-
     // Everything the child needs is built before fork: after it, only exec.
     std::vector<std::string> args = {worker()};
     for (const auto& p : loaded_plugins()) args.insert(args.end(), {"--plugin", p.path});
-    args.insert(args.end(), {"__run", "--spec", spec_text(spec, *scene), "--series", std::to_string(options.series_samples)});
-    if (!options.measure_time || !spec.timed) args.push_back("--untimed");
+    args.insert(args.end(), verb_arguments.begin(), verb_arguments.end());
     std::vector<char*> argv;
     for (auto& a : args) argv.push_back(a.data());
     argv.push_back(nullptr);
@@ -133,7 +127,8 @@ RunResult run_isolated(const RunSpec& spec, const RunOptions& options, const Iso
         ::close(out[0]), ::close(err[0]);
         return fail(std::string("could not start its worker: ") + std::strerror(errno));
     }
-    std::string text, errors;
+    std::string& text = result.text;
+    std::string errors;
     ::fcntl(out[0], F_SETFL, O_NONBLOCK);
     ::fcntl(err[0], F_SETFL, O_NONBLOCK);
     const auto start = std::chrono::steady_clock::now();
@@ -173,23 +168,46 @@ RunResult run_isolated(const RunSpec& spec, const RunOptions& options, const Iso
         if (f.fd >= 0) ::close(f.fd);
     while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
     }
+    const auto end = errors.find_last_not_of("\n");
+    if (end != std::string::npos) {
+        const auto begin = errors.rfind('\n', end);
+        result.last_error_line = ": " + errors.substr(begin == std::string::npos ? 0 : begin + 1,
+                                                      end - (begin == std::string::npos ? 0 : begin + 1) + 1);
+    }
     if (interrupted) {
-        failed.interrupted = true;
-        return failed;
+        result.interrupted = true;
+        return result;
     }
     if (timed_out) return fail(fmt::format("exceeded the run time limit of {:g} s (--run-timeout); its worker was killed", seconds));
     if (too_much) return fail(fmt::format("its worker wrote more than {} MB as its result; it was killed", max_worker_output >> 20));
     if (WIFSIGNALED(status))
         return fail(fmt::format("crashed: signal {} ({}) in its worker process", WTERMSIG(status), ::strsignal(WTERMSIG(status))));
-    const auto last_line = [&] {
-        const auto end = errors.find_last_not_of("\n");
-        if (end == std::string::npos) return std::string();
-        const auto begin = errors.rfind('\n', end);
-        return ": " + errors.substr(begin == std::string::npos ? 0 : begin + 1, end - (begin == std::string::npos ? 0 : begin + 1) + 1);
-    };
     if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
         return fail(fmt::format("its worker exited with status {} without a result{}", WIFEXITED(status) ? WEXITSTATUS(status) : -1,
-                                last_line()));
+                                result.last_error_line));
+    return result;
+}
+
+RunResult run_isolated(const RunSpec& spec, const RunOptions& options, const IsolationLimits& limits) {
+    RunResult failed{spec, {}, {}};
+    const auto fail = [&](const std::string& why) {
+        failed.failure = why;
+        failed.metrics = {{"unstable", 1.0}};
+        return failed;
+    };
+    const auto scene = scene_of(spec);
+    const double seconds = limits.seconds > 0 ? limits.seconds : default_timeout(spec, *scene);
+    const std::size_t megabytes = limits.megabytes > 0 ? limits.megabytes : isolation_memory(1);
+    std::vector<std::string> args = {"__run", "--spec", spec_text(spec, *scene), "--series", std::to_string(options.series_samples)};
+    if (!options.measure_time || !spec.timed) args.push_back("--untimed");
+    const WorkerOutput worker = run_worker(args, seconds, megabytes);
+    if (worker.interrupted) {
+        failed.interrupted = true;
+        return failed;
+    }
+    if (!worker.failure.empty()) return fail(worker.failure);
+    const std::string& text = worker.text;
+    const std::string& last_line = worker.last_error_line;
     RunRecords records;
     try {
         records = parse_run_records(text, "the worker's output");
@@ -197,12 +215,12 @@ RunResult run_isolated(const RunSpec& spec, const RunOptions& options, const Iso
         return fail(std::string("its worker's output was not a run: ") + e.what());
     }
     if (records.runs.size() != 1 || records.whole_length != text.size())
-        return fail("its worker's output was not one whole run" + last_line());
+        return fail("its worker's output was not one whole run" + last_line);
     RunResult result = std::move(records.runs.front().second);
     const double t_end = result.spec.t_end;  // the scene's, as a run in process records it
     result.spec = spec;                      // with what a record does not carry
     result.spec.t_end = t_end;
-    if (limit_memory && result.failure.find("bad_alloc") != std::string::npos)
+    if (memory_limit_enforced() && result.failure.find("bad_alloc") != std::string::npos)
         result.failure += fmt::format(" (its worker's memory is limited to {} MB, --run-memory)", megabytes);
     return result;
 }

@@ -9,6 +9,7 @@
 
 #include <cstddef>
 #include <string>
+#include <vector>
 
 namespace rotbench {
 
@@ -32,6 +33,17 @@ std::size_t isolation_memory(int jobs);
 // False in a build with AddressSanitizer, which reserves terabytes of address space for its
 // shadow memory at start: a worker there runs without the memory limit.
 bool memory_limit_enforced();
+
+// What a worker wrote on its standard output, once it has exited with status 0; otherwise
+// `failure` names the signal, the exit status or the limit that stopped it. `verb_arguments`
+// follow `rotbench --plugin P ...` (every loaded plug-in): a hidden verb and its options.
+// The worker runs in its own process group under the time and memory limits, and all of the
+// group is killed when it ends; an interrupt kills it and sets `interrupted`.
+struct WorkerOutput {
+    std::string text, failure, last_error_line;  // the last line ": ..." of its standard error, if any
+    bool interrupted = false;
+};
+WorkerOutput run_worker(const std::vector<std::string>& verb_arguments, double seconds, std::size_t megabytes);
 
 // The run made by a worker. Never throws for the run's own failure; an interrupt (SIGINT,
 // SIGTERM) kills the worker and returns an interrupted result within a tenth of a second.

@@ -13,8 +13,9 @@ const std::string contact_header = "scene,scheme,zeta,kind,dt_empirical,dt_ampli
 const std::string spin_header = "scene,scheme,omega_max,kind,dt_empirical,dt_peng";
 
 void read_kind(StabilityRow& r, const std::string& kind, const std::string& at) {
-    if (kind != "sharp" && kind != "weak" && kind != "none")
-        throw InputError(at + ": kind '" + kind + "' is not sharp, weak or none");
+    if (kind != "sharp" && kind != "weak" && kind != "none" && kind != "failed")
+        throw InputError(at + ": kind '" + kind + "' is not sharp, weak, none or failed");
+    if (kind == "failed") r.failure = "failed (stability.md, where rotbench stability wrote it, says why)";
     r.unstable_at_every_dt = kind == "weak" && r.dt_empirical != 0.0;
 }
 

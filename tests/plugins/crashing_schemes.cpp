@@ -17,7 +17,7 @@ template <int Mode> struct Bad {
     struct Memory {};
     static void start(const RigidBody&, Memory&) {}
     static void predict(RigidBody&, Memory&, double) {
-        if constexpr (Mode == 0) *null_target = 1;
+        if constexpr (Mode == 0 || Mode == 8) *null_target = 1;
         if constexpr (Mode == 1) std::abort();
         if constexpr (Mode == 2) std::exit(7);
         if constexpr (Mode == 3) for (;;) std::this_thread::sleep_for(std::chrono::seconds(1));
@@ -54,4 +54,6 @@ const RegisterScheme<Bad<4>> e("bad_oom", "eats memory", "t", "", {.sound = fals
 const RegisterScheme<Bad<5>> f("bad_throw42", "throws 42", "t", "", {.sound = false});
 const RegisterScheme<Bad<6>> g("bad_orphan", "leaves a process holding its output", "t", "", {.sound = false});
 const RegisterScheme<Bad<7>> h("bad_in_benchmark", "segfaults in rotbench_bench only", "t", "", {.sound = false});
+// A candidate its author believes sound: `advise` considers it (it skips the controls above).
+const RegisterScheme<Bad<8>> i("bad_sound_segfault", "segfaults, though it claims to be sound", "t", "", {.sound = true});
 }
