@@ -20,22 +20,23 @@ std::string run_record(std::size_t index, const RunResult& result) {
 
 namespace {
 
-// "run I R N S P": six words, five of them counts; false for anything else.
+// "run I R N S P": six words, five of them counts; false for anything else. The record of a
+// build before the snapshots, "run I R N S", reads as one without them: a journal an older
+// rotbench left is resumed, not redone.
 bool parse_header(const std::string& line, std::size_t& index, std::size_t (&lengths)[4]) {
     std::size_t values[5] = {0, 0, 0, 0, 0};
-    std::size_t at = 0;
     if (line.compare(0, 4, "run ") != 0) return false;
-    at = 4;
-    for (int k = 0; k < 5; ++k) {
-        const auto [ptr, ec] = std::from_chars(line.data() + at, line.data() + line.size(), values[k]);
+    std::size_t at = 4;
+    int count = 0;
+    for (; count < 5; ++count) {
+        const auto [ptr, ec] = std::from_chars(line.data() + at, line.data() + line.size(), values[count]);
         if (ec != std::errc()) return false;
         at = static_cast<std::size_t>(ptr - line.data());
-        if (k < 4) {
-            if (at >= line.size() || line[at] != ' ') return false;
-            ++at;
-        }
+        if (at == line.size()) break;
+        if (line[at] != ' ') return false;
+        ++at;
     }
-    if (at != line.size()) return false;
+    if (at != line.size() || count < 3) return false;  // 4 or 5 numbers, the last one ending the line
     index = values[0];
     for (int k = 0; k < 4; ++k) lengths[k] = values[k + 1];
     return true;

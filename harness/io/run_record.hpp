@@ -1,7 +1,8 @@
 // One finished run as a self-delimiting record: the form in which the journal keeps runs and
 // an isolated worker hands its run back.
-//   "run INDEX R N S\n", R bytes of its results.csv, N of its runs.csv, S of its energy
-//   series (0: none), "end INDEX\n"
+//   "run INDEX R N S P\n", R bytes of its results.csv, N of its runs.csv, S of its series
+//   (0: none), P of its snapshots (0: none), "end INDEX\n"; an older build's "run INDEX R N S"
+//   reads as a record without snapshots
 // A record cut short (a kill while it was written) is not a record.
 #pragma once
 
