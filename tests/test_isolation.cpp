@@ -206,3 +206,26 @@ TEST_CASE("isolation: `advise` does not recommend a plug-in that crashes, says w
     CHECK_THAT(r.out, Catch::Contains("bad_sound_segfault: its stability search failed: "));
     fs::remove_all(dir);
 }
+
+TEST_CASE("isolation: a plug-in's stability case in a worker gives the in-process limits, bit for bit") {
+    const fs::path dir = fresh_dir("isolation_stability_same");
+    const std::vector<std::string> study = {"stability", "--plugin", PLUGIN_END_VELOCITY_ZVW, "--schemes", "zvw_end_velocity",
+                                            "--scenes", "sphere_pair,fast_spin", "--zeta", "0.1", "--omega-max", "100", "--quiet",
+                                            "--out"};
+    auto isolated = study, in_process = study;
+    isolated.push_back((dir / "isolated").string());
+    in_process.push_back((dir / "in_process").string());
+    REQUIRE(cli(isolated).status == 0);
+    const std::string worker = worker_executable();
+    set_worker_executable("");  // no worker: the plug-in's cases run in this process
+    in_process.erase(in_process.begin() + 1, in_process.begin() + 3);
+    const Cli local = cli(in_process);
+    set_worker_executable(worker);
+    REQUIRE(local.status == 0);
+    for (const char* f : {"stability.csv", "stability_spin.csv", "plots/spectral_radius_sphere_pair.dat"}) {
+        INFO(f);
+        CHECK(read(dir / "isolated" / f) == read(dir / "in_process" / f));
+    }
+    CHECK_THAT(read(dir / "isolated" / "stability.csv"), Catch::Contains("zvw_end_velocity,0.1,sharp"));
+    fs::remove_all(dir);
+}
