@@ -131,9 +131,10 @@ std::string stability_section(const std::vector<StabilityRow>& rows, const Resul
                           r.omega_max > 0 ? fmt::format("w {:g} rad/s", r.omega_max) : fmt::format("zeta {:g}", r.zeta), r.scheme,
                           stability_kind(r), number(r.dt_empirical), number(r.dt_amplification), number(r.dt_peng));
     md += "\n";
+    std::string failures;
     for (const auto& r : rows)
-        if (!r.failure.empty()) md += fmt::format("- `{}` on `{}` failed: {}\n", r.scheme, r.scene, r.failure);
-    md += "\n";
+        if (!r.failure.empty()) failures += fmt::format("- `{}` on `{}` failed: {}\n", r.scheme, r.scene, r.failure);
+    if (!failures.empty()) md += failures + "\n";
     std::map<std::string, std::vector<const StabilityRow*>> by_scene;
     for (const auto& r : rows)
         if (r.omega_max == 0 && r.failure.empty()) by_scene[r.scene].push_back(&r);
