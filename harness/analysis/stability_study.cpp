@@ -54,11 +54,10 @@ void read_stability_case_text(const std::string& text, StabilityRow& r) {
     r.unstable_at_every_dt = v[4] == 1.0;
 }
 
-// The limits that come from the scene alone (no scheme runs): Peng's and Verlet's.
-void predicted_limits(StabilityRow& r) {
-    const auto scene = make_scene(r.scene, overrides(r));
-    r.dt_peng = dynamic_cast<const StabilityProbe&>(*scene).predicted_limit();
-    const auto* pair = dynamic_cast<const ContactPairScene*>(scene.get());
+// The limits that come from the row's scene alone (no scheme runs): Peng's and Verlet's.
+void predicted_limits(StabilityRow& r, const Scene& scene) {
+    r.dt_peng = dynamic_cast<const StabilityProbe&>(scene).predicted_limit();
+    const auto* pair = dynamic_cast<const ContactPairScene*>(&scene);
     r.dt_verlet_normal = pair ? pair->verlet_normal_limit() : NAN;
 }
 
@@ -106,7 +105,7 @@ std::vector<StabilityRow> stability_study(const std::vector<std::string>& scenes
             }
         } finish{progress, i};
         if (!isolated(r.scheme)) return measure_stability_case(r);
-        predicted_limits(r);  // the row keeps them whatever the worker does
+        predicted_limits(r, *make_scene(r.scene, overrides(r)));  // the row keeps them whatever the worker does
         std::vector<std::string> args = {"__stability", "--scene", r.scene, "--scheme", r.scheme};
         if (r.omega_max > 0) args.insert(args.end(), {"--omega-max", fmt::format("{:.17g}", r.omega_max)});
         else args.insert(args.end(), {"--zeta", fmt::format("{:.17g}", r.zeta)});
@@ -121,7 +120,7 @@ void measure_stability_case(StabilityRow& r) {
     const auto scene = make_scene(r.scene, overrides(r));
     const auto& probe = dynamic_cast<const StabilityProbe&>(*scene);
     const StabilityCriterion c{stability_horizon_periods * probe.period(), stability_growth};
-    predicted_limits(r);
+    predicted_limits(r, *scene);
     r.dt_empirical = empirical_limit(*scene, r.scheme, r.dt_peng, c);
     if (probe.linearisable_at_rest()) {
         r.dt_amplification = amplification_limit(*scene, r.scheme, r.dt_peng, c);

@@ -168,11 +168,10 @@ WorkerOutput run_worker(const std::vector<std::string>& verb_arguments, double s
         if (f.fd >= 0) ::close(f.fd);
     while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
     }
-    const auto end = errors.find_last_not_of("\n");
-    if (end != std::string::npos) {
-        const auto begin = errors.rfind('\n', end);
-        result.last_error_line = ": " + errors.substr(begin == std::string::npos ? 0 : begin + 1,
-                                                      end - (begin == std::string::npos ? 0 : begin + 1) + 1);
+    if (const auto end = errors.find_last_not_of("\n"); end != std::string::npos) {
+        const auto line_break = errors.rfind('\n', end);
+        const std::size_t begin = line_break == std::string::npos ? 0 : line_break + 1;
+        result.last_error_line = ": " + errors.substr(begin, end - begin + 1);
     }
     if (interrupted) {
         result.interrupted = true;
