@@ -11,12 +11,13 @@ namespace rotbench {
 namespace {
 
 struct FinchamRotation {
+    static constexpr bool unit_result = true;
     template <class S>
     static QuatT<S> rotate(const RigidBodyT<S>& start, const Vec3T<S>& momentum, double dt) {
         const QuatT<S>& q = start.q;
-        const QuatT<S> half(q.coeffs() + 0.5 * dt * quaternion_rate(q, start.omega));
-        const Vec3T<S> omega_half = omega_from_momentum(half, start.inertia, momentum);
-        return normalized(QuatT<S>(q.coeffs() + dt * quaternion_rate(half, omega_half)));
+        const QuatT<S> half(q.coeffs() + (0.25 * dt) * pure_times<S>(start.omega, q));
+        const Vec3T<S> omega_half = omega_from_momentum(body_axes(half), start.inertia.cwiseInverse(), momentum);
+        return normalized(QuatT<S>(q.coeffs() + (0.5 * dt) * pure_times<S>(omega_half, half)));
     }
 };
 

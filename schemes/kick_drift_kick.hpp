@@ -27,11 +27,15 @@ namespace rotbench {
 // momentum `momentum` (= L^{n+1/2}); start also holds w^n and T^n. Written as a template on
 // the scalar, the scheme steps packs of bodies (schemes/simd.hpp). A policy written for one
 // body only, `static Quat rotate(const RigidBody&, const Vec3&, double)`, works as well; its
-// scheme then steps one body at a time.
+// scheme then steps one body at a time. A policy that changes frames at q^n more than once
+// may take its body axes (body_axes) as well: rotate(start, momentum, axes, dt). One that
+// returns a normalised q says so, `static constexpr bool unit_result = true;`.
 #if ROTBENCH_SIMD
 template <class Rotation>
 concept RotatesPacks = requires(const RigidBodyT<Pack>& b, const Vec3T<Pack>& momentum, double dt) {
     { Rotation::rotate(b, momentum, dt) } -> std::same_as<QuatT<Pack>>;
+} || requires(const RigidBodyT<Pack>& b, const Vec3T<Pack>& momentum, const BodyAxesT<Pack>& axes, double dt) {
+    { Rotation::rotate(b, momentum, axes, dt) } -> std::same_as<QuatT<Pack>>;
 };
 #else
 template <class Rotation>
@@ -56,32 +60,45 @@ struct KickDriftKick {
 
     static void predict(RigidBodyT<S>& b, Memory& m, double dt) {
         m.momentum += 0.5 * dt * b.torque;
-        b.q = Rotation::rotate(b, m.momentum, dt);
-        b.omega = omega_from_momentum(b.q, b.inertia, m.momentum);  // what the force model sees
+        if constexpr (requires { Rotation::rotate(b, m.momentum, body_axes(b.q), dt); })
+            b.q = Rotation::rotate(b, m.momentum, body_axes(b.q), dt);
+        else b.q = Rotation::rotate(b, m.momentum, dt);
+        b.omega = omega(b, m);  // what the force model sees
     }
 
     static void correct(RigidBodyT<S>& b, Memory& m, double dt) {
         m.momentum += 0.5 * dt * b.torque;
-        b.omega = omega_from_momentum(b.q, b.inertia, m.momentum);
+        b.omega = omega(b, m);
+    }
+
+private:
+    // w = I(q)^-1 L. Of a normalised q, through its axes with no division by |q|^2 (shorter
+    // than two quaternion rotations, which divide by it).
+    ROTBENCH_INLINE static Vec3T<S> omega(const RigidBodyT<S>& b, const Memory& m) {
+        if constexpr (requires { requires Rotation::unit_result; })
+            return omega_from_momentum(body_axes<true>(b.q), b.inertia.cwiseInverse(), m.momentum);
+        else return omega_from_momentum(b.q, b.inertia, m.momentum);
     }
 };
 
 // The implicit mid-step angular velocity of the time-reversible schemes: the fixed point of
 //   w_mid = I(q_mid(w_mid))^-1 L,
-// where midpoint(w) gives the orientation at the middle of the step rotated with w. Fixed-
+// where midpoint(w) gives the orientation at the middle of the step rotated with w (any
+// norm: its axes are divided by |q|^2), starting from w at q^n (axes: its body axes). Fixed-
 // point iteration from the start-of-step value; it contracts by about dt |w| (I_max/I_min - 1)
 // per pass. A step so large that it does not converge is a failure of the scheme there: it
 // throws, and the harness records the run as failed. In a pack each body stops at its own
 // pass, so that it gets the bits it gets alone.
 template <class S, class Midpoint>
-Vec3T<S> midpoint_angular_velocity(const RigidBodyT<S>& start, const Vec3T<S>& momentum, Midpoint&& midpoint,
-                                   const char* scheme) {
+Vec3T<S> midpoint_angular_velocity(const RigidBodyT<S>& start, const Vec3T<S>& momentum, const BodyAxesT<S>& axes,
+                                   Midpoint&& midpoint, const char* scheme) {
     constexpr int max_iterations = 100;
-    Vec3T<S> omega = omega_from_momentum(start.q, start.inertia, momentum);
+    const Vec3T<S> inverse_inertia = start.inertia.cwiseInverse();
+    Vec3T<S> omega = omega_from_momentum(axes, inverse_inertia, momentum);
     S previous(INFINITY);
     auto iterating = all_true<S>();
     for (int i = 0; i < max_iterations; ++i) {
-        const Vec3T<S> next = omega_from_momentum(midpoint(omega), start.inertia, momentum);
+        const Vec3T<S> next = omega_from_momentum(body_axes(midpoint(omega)), inverse_inertia, momentum);
         const S change = (next - omega).norm(), scale = next.norm();
         omega = select(iterating, next, omega);
         // Converged: within about four units of round-off of |w|, or, once below 1e-13 |w|,

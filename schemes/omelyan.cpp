@@ -14,16 +14,15 @@ template <class S>
 QuatT<S> omelyan_step(const QuatT<S>& q, const Vec3T<S>& omega, double dt) {
     const Vec3T<S> u = 0.25 * dt * omega;
     const S u2 = u.squaredNorm();
-    return QuatT<S>(((1.0 - u2) * q.coeffs() + dt * quaternion_rate(q, omega)) / (1.0 + u2));  // 2 u q = dt (1/2 w q)
+    return QuatT<S>(((1.0 - u2) * q.coeffs() + (0.5 * dt) * pure_times<S>(omega, q)) / (1.0 + u2));  // 2 u q = dt (1/2 w q)
 }
 
 struct OmelyanRotation {
     template <class S>
-    static QuatT<S> rotate(const RigidBodyT<S>& start, const Vec3T<S>& momentum, double dt) {
+    static QuatT<S> rotate(const RigidBodyT<S>& start, const Vec3T<S>& momentum, const BodyAxesT<S>& axes, double dt) {
         const QuatT<S>& q = start.q;
-        // omega_from_momentum divides by |q|^2, so the mid-point need not be normalised.
         const auto midpoint = [&](const Vec3T<S>& w) { return QuatT<S>(q.coeffs() + omelyan_step(q, w, dt).coeffs()); };
-        return omelyan_step(q, midpoint_angular_velocity(start, momentum, midpoint, "omelyan"), dt);
+        return omelyan_step(q, midpoint_angular_velocity(start, momentum, axes, midpoint, "omelyan"), dt);
     }
 };
 

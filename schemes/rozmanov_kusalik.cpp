@@ -14,10 +14,10 @@ namespace {
 
 struct RozmanovKusalikRotation {
     template <class S>
-    static QuatT<S> rotate(const RigidBodyT<S>& start, const Vec3T<S>& momentum, double dt) {
+    static QuatT<S> rotate(const RigidBodyT<S>& start, const Vec3T<S>& momentum, const BodyAxesT<S>& axes, double dt) {
         const QuatT<S>& q = start.q;
         const auto midpoint = [&](const Vec3T<S>& w) { return QuatT<S>(rotation_increment<S>(w, 0.5 * dt) * q); };
-        return rotation_increment<S>(midpoint_angular_velocity(start, momentum, midpoint, "rozmanov_kusalik"), dt) * q;
+        return rotation_increment<S>(midpoint_angular_velocity(start, momentum, axes, midpoint, "rozmanov_kusalik"), dt) * q;
     }
 };
 
