@@ -28,6 +28,17 @@ std::string range(double lo, double hi) {
     return std::abs(hi - lo) < 0.005 ? fmt::format("{:.2f}", lo) : fmt::format("{:.2f}–{:.2f}", lo, hi);
 }
 
+// omega_err_max over |w_ref| at the scheme's finest stable step on a scene: near 1 when the
+// error has saturated, near round-off when it is round-off that does not converge.
+double finest_relative_error(const ResultSet& set, const std::string& scene, const std::string& scheme) {
+    const RunResult* finest = nullptr;
+    for (const auto& r : set.runs)
+        if (r.spec.scene == scene && r.spec.scheme == scheme && std::isfinite(r.value("omega_err_max")) &&
+            (!finest || r.spec.dt < finest->spec.dt))
+            finest = &r;
+    return finest ? finest->value("omega_err_max") / finest->value("omega_ref_max") : NAN;
+}
+
 // "claimed → observed" for the angular-velocity error's order over the judged scenes.
 std::string order_cell(const ResultSet& set, const std::vector<OrderRow>& orders, const std::string& scheme, bool with_torque) {
     const SchemeInfo* info = set.scheme(scheme);
@@ -37,12 +48,16 @@ std::string order_cell(const ResultSet& set, const std::vector<OrderRow>& orders
         if (!with_torque && info->claims.exact_without_torque) claimed = "exact";
         else if (order > 0) claimed = std::to_string(order);
     }
-    double lo = INFINITY, hi = -INFINITY;
+    double lo = INFINITY, hi = -INFINITY, stuck_lo = INFINITY, stuck_hi = -INFINITY;
     std::map<OrderStatus, int> count;
     for (const auto& o : orders) {
         if (o.scheme != scheme || o.metric != "omega_err_max" || !judged_scene(set.scene(o.scene), with_torque)) continue;
         ++count[o.status];
         if (o.status == OrderStatus::fit) lo = std::min(lo, o.fit.order), hi = std::max(hi, o.fit.order);
+        if (o.status == OrderStatus::no_convergence) {
+            const double e = finest_relative_error(set, o.scene, scheme);
+            stuck_lo = std::min(stuck_lo, e), stuck_hi = std::max(stuck_hi, e);
+        }
     }
     if (count.empty()) return "—";
     std::string observed;
@@ -51,7 +66,10 @@ std::string order_cell(const ResultSet& set, const std::vector<OrderRow>& orders
     const int scenes = count[OrderStatus::fit] + count[OrderStatus::exact] + count[OrderStatus::insufficient] +
                        count[OrderStatus::no_convergence];
     if (int n = count[OrderStatus::exact]) add(n == scenes ? "exact" : fmt::format("{} exact", n));
-    if (int n = count[OrderStatus::no_convergence]) add(n == scenes ? "no convergence" : fmt::format("{} no convergence", n));
+    if (int n = count[OrderStatus::no_convergence]) {
+        const std::string error = stuck_lo == stuck_hi ? fmt::format("{:.2g}", stuck_lo) : fmt::format("{:.2g}–{:.2g}", stuck_lo, stuck_hi);
+        add(fmt::format("{}no convergence (relative error {} at the finest dt)", n == scenes ? "" : fmt::format("{} ", n), error));
+    }
     if (int n = count[OrderStatus::insufficient]) add(n == scenes ? "insufficient" : fmt::format("{} insufficient", n));
     return claimed + " → " + observed;
 }
@@ -153,7 +171,9 @@ std::string verdict_section(const ResultSet& set, const std::vector<OrderRow>& o
         "## Verdicts\n\n"
         "One row per scheme. *Order*: claimed → observed order of the angular-velocity error, over the torque-free scenes "
         "with a reference (*free*) and those with an orientation-dependent torque (*torque*); a range spans the scenes, "
-        "\"exact\" is round-off only, and the other statuses are those of `orders.csv`. *Momentum*: the world angular "
+        "\"exact\" is round-off only, and the other statuses are those of `orders.csv`; after \"no convergence\", "
+        "the relative error at the scheme's finest step (`omega_err_max` over the largest |w_ref|): near 1 where the error "
+        "has saturated, far below it where it is round-off that does not converge. *Momentum*: the world angular "
         "momentum on the torque-free scenes, \"kept\" to round-off ((4 N + 16) eps) or the largest relative drift. "
         "*Energy*: \"kept\" to round-off (10 eps per step), else, on each torque-free scene at its coarsest step, "
         "\"bounded\" when the largest error over the second half of the run is below sqrt 2 times that over the first "

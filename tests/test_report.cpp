@@ -1,6 +1,7 @@
 // The report's first screen answers "which scheme, at what dt, at what cost"; its tables and
 // plots stay readable; its data files are typed.
 #include "cli_helpers.hpp"
+#include "harness/io/results_csv.hpp"
 #include "harness/io/stability_csv.hpp"
 
 #include <catch2/catch.hpp>
@@ -63,6 +64,19 @@ TEST_CASE("the report of a quick run with its stability study") {
         // The stability study merged from the directory: sphere_pair's table, Peng's dt first.
         CHECK_THAT(text, Catch::Contains("### `sphere_pair`\n\n| scheme | zeta = 0 | zeta = 0.3 |"));
         CHECK_THAT(text, Catch::Contains("| *Peng's dt (s)* |"));
+    }
+    SECTION("a scheme that does not converge shows how far from converged it stays") {
+        // no_gyro on asymmetric_free: the verdict gives omega_err_max / omega_ref_max at its finest
+        // step, so a saturated error (near 1) reads apart from round-off that does not converge.
+        const RunResult* finest = nullptr;
+        const std::vector<RunResult> runs = read_results(report_dir());
+        for (const auto& r : runs)
+            if (r.spec.scene == "asymmetric_free" && r.spec.scheme == "no_gyro" && (!finest || r.spec.dt < finest->spec.dt)) finest = &r;
+        REQUIRE(finest);
+        const double relative = finest->value("omega_err_max") / finest->value("omega_ref_max");
+        CHECK(relative > 0.01);  // the control's error does not fall with dt: it stays of the order of w
+        CHECK_THAT(read(report_dir() / "report.md"),
+                   Catch::Contains(fmt::format("| `no_gyro` (control) | — → no convergence (relative error {:.2g} at the finest dt) |", relative)));
     }
     SECTION("no table of the report has more than 7 columns") {
         for (const auto& l : lines(read(report_dir() / "report.md"))) {
