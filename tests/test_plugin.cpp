@@ -39,9 +39,16 @@ TEST_CASE("plug-in: bad plug-ins give one line on stderr and exit status 2") {
     }
 }
 
-TEST_CASE("plug-in: a scheme id that is already registered is refused") {
-    CHECK(cli({"list", "--plugin", PLUGIN_MISBEHAVING}).status == 0);
+TEST_CASE("plug-in: a scheme id another file registered is refused, and the same file twice is loaded once") {
     const Cli twice = cli({"list", "--plugin", PLUGIN_MISBEHAVING, "--plugin", PLUGIN_MISBEHAVING});
-    CHECK(twice.status == 2);
-    CHECK_THAT(twice.err, Catch::Contains("is already registered"));
+    CHECK(twice.status == 0);
+    CHECK_THAT(twice.out, Catch::Contains("plugin_nan"));
+    const fs::path dir = fresh_dir("plugin_copy"), copy = dir / "copy.so";  // the same ids from another file
+    fs::create_directories(dir);
+    fs::copy_file(PLUGIN_MISBEHAVING, copy);
+    const Cli clash = cli({"list", "--plugin", PLUGIN_MISBEHAVING, "--plugin", copy.string()});
+    CHECK(clash.status == 2);
+    CHECK_THAT(clash.err, Catch::Contains("scheme 'plugin_"));
+    CHECK_THAT(clash.err, Catch::Contains("is already registered"));
+    fs::remove_all(dir);
 }

@@ -46,6 +46,10 @@ std::vector<std::string> load_plugin(const std::string& path) {
     if (!std::filesystem::is_regular_file(path)) throw InputError(where + ": not a regular file");
     const auto bytes = read_file(path);
     if (!bytes) throw InputError(where + ": cannot read the file");
+    // The same file again (a long-lived process, or the option given twice): already loaded.
+    const std::string absolute = std::filesystem::absolute(path).string(), hash = hash_of(*bytes);
+    for (const auto& p : plugins())
+        if (p.path == absolute && p.hash == hash) return p.schemes;
     // A path without '/' would make dlopen search the library path instead of this file.
     const std::string file = path.find('/') == std::string::npos ? "./" + path : path;
     void* handle = dlopen(file.c_str(), RTLD_NOW | RTLD_LOCAL);
@@ -73,7 +77,7 @@ std::vector<std::string> load_plugin(const std::string& path) {
             throw InputError(where + ": scheme '" + id + "' is already registered; give the plug-in's scheme another id");
     }
     for (const auto& id : ids) ours.add(theirs.at(id, "scheme"));
-    plugins().push_back({std::filesystem::absolute(path).string(), hash_of(*bytes), ids});
+    plugins().push_back({absolute, hash, ids});
     return ids;  // the handle is kept open: the factories live in the library
 }
 
