@@ -141,7 +141,9 @@ ROTBENCH_INLINE Vec3T<S> momentum_from_omega(const QuatT<S>& q, const Vec3Of<S>&
 // frames several times at one orientation builds them once: then w = I(q)^-1 L costs two
 // matrix-vector products instead of four quaternion rotations (LAMMPS's fix rigid keeps them
 // so). For a q just normalised (`unit`), |q|^2 is 1 to round-off and is not divided by;
-// otherwise the axes are divided by |q|^2, so that they are orthonormal whatever |q|.
+// otherwise the axes are divided by |q|^2, so that they are orthonormal whatever |q|. A
+// scheme that carries w itself through its frame changes from step to step (direct, zvw)
+// keeps the rotations above: there the matrix's round-off accumulates (docs/performance.md).
 template <class S>
 struct BodyAxesT {
     Vec3T<S> x, y, z;
