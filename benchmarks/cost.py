@@ -15,7 +15,7 @@
                                the scheme's.
   public, public_ratio_batched,  for a scheme with a public code's counterpart (a plug-in scheme named
   public_ratio_alone,          `<scheme>__<code>`; BUILD_DIR/rotbench_public_counterparts.so is loaded by
-  public_ratio_runs_differ     default: LAMMPS's, HOOMD-blue's and Yade's arithmetic written anew), its id
+  public_ratio_runs_differ     default: LAMMPS's, HOOMD-blue's, Yade's and Kratos's arithmetic written anew), its id
                                and the counterpart's time over the scheme's, batched and alone (above 1:
                                rotbench is faster), and how much the batched ratio differs between the
                                tables. Of several counterparts, the fastest one body at a time.
