@@ -64,8 +64,9 @@ Outcome advise_one(const Scene& scene, const ParamOverrides& params, double t_en
         if (stable(r) && relative_error(r) < advice_asymptotic_error) points.push_back({r.spec.dt, relative_error(r)});
         if (std::isfinite(r.value("ns_per_step"))) ns.push_back(r.value("ns_per_step"));
     }
-    if (in_worker && !ladder.front().failure.empty() && ladder.front().failure.rfind("blew up", 0) != 0)
-        return {false, o.r, "its run failed: " + ladder.front().failure};  // crashed, hung or threw in its worker
+    // A blow-up is the scheme's instability (it records its fail_step); anything else crashed, hung or threw.
+    if (in_worker && !ladder.front().failure.empty() && !ladder.front().has("fail_step"))
+        return {false, o.r, "its run failed: " + ladder.front().failure};
     if (!stable(ladder.front()))  // the search's horizon is the criterion's; a run may still fail
         return {false, o.r, fmt::format("unstable at {:.3g} s below its measured limit {:.3g} s", dt0, limit)};
     // No rung meets the tolerance: extrapolate from the finest with the observed order, run
