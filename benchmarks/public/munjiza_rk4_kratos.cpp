@@ -14,7 +14,8 @@ using namespace kratos_style;
 
 struct MunjizaRk4Kratos {
     struct Memory {
-        double angmom[3];  // ANGULAR_MOMENTUM, world
+        double angmom[3];      // ANGULAR_MOMENTUM, world
+        double omega_body[3];  // LOCAL_ANGULAR_VELOCITY, which Kratos stores at every step
     };
 
     // I(q_turned)^-1 H with q_turned = exp(w h / 2) q (QuaternionCalculateMidAngularVelocities).
@@ -44,8 +45,7 @@ struct MunjizaRk4Kratos {
         const Quaternion4 next = turned(q, rotation);
         world_inverse_tensor(next, inertia, tensor);
         times(tensor, m.angmom, w);
-        double w_body[3];  // Kratos also stores LOCAL_ANGULAR_VELOCITY
-        to_local(next, w, w_body);
+        to_local(next, w, m.omega_body);
         b.q = to_quat(next);
         b.omega = Vec3(w[0], w[1], w[2]);
     }
