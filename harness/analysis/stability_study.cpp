@@ -3,6 +3,7 @@
 #include "harness/engine/isolation.hpp"
 #include "harness/engine/parallel.hpp"
 #include "harness/scenes/contact_pair.hpp"
+#include "harness/scenes/stability_probe.hpp"
 #include "harness/analysis/stability.hpp"
 
 #include <algorithm>
@@ -68,9 +69,7 @@ double spectral_dt(double dt_peng, int k) { return dt_peng / 30.0 * std::pow(90.
 }  // namespace
 
 void check_stability_scenes(const std::vector<std::string>& scenes) {
-    std::vector<std::string> valid;
-    for (const auto& id : SceneRegistry::instance().ids())
-        if (dynamic_cast<const StabilityProbe*>(make_scene(id).get())) valid.push_back(id);
+    const std::vector<std::string> valid = stability_scene_ids();
     for (const auto& scene : scenes)
         if (std::find(valid.begin(), valid.end(), scene) == valid.end())
             throw InputError("scene '" + scene + "' is not a stability scene; valid: " + join(valid, ", "));

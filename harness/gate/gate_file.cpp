@@ -100,12 +100,9 @@ GateCheck read_check(const std::string& path, const toml::table& t, std::size_t 
     const bool ladder = c.criterion == "min_order";
     if (c.criterion == "min_stability") {
         if (!c.dts.empty()) toml_error(path, t, "min_stability searches for the limit itself: remove 'dt'");
-        if (!dynamic_cast<const StabilityProbe*>(make_scene(c.scene).get())) {
-            std::vector<std::string> valid;
-            for (const auto& id : SceneRegistry::instance().ids())
-                if (dynamic_cast<const StabilityProbe*>(make_scene(id).get())) valid.push_back(id);
+        const std::vector<std::string> valid = stability_scene_ids();
+        if (std::find(valid.begin(), valid.end(), c.scene) == valid.end())
             toml_error(path, t, "min_stability needs a stability scene (" + join(valid, ", ") + "), not '" + c.scene + "'");
-        }
     } else if (!ladder && c.dts.size() != 1) {
         toml_error(path, t, "'" + c.criterion + "' needs exactly one 'dt'");
     }
