@@ -1,35 +1,12 @@
 #include "harness/io/toml_ascii.hpp"
 
+#include "harness/io/utf8.hpp"
 #include "schemes/registry.hpp"
 
 #include <fmt/format.h>
 
 namespace rotbench {
 namespace {
-
-// The code point of the UTF-8 sequence at text[i] and its length, or length 0 when the
-// sequence is malformed (RFC 3629: no overlong forms, no surrogates, nothing above U+10FFFF).
-struct CodePoint {
-    char32_t value = 0;
-    std::size_t length = 0;
-};
-
-CodePoint decode(std::string_view text, std::size_t i) {
-    const auto byte = [&](std::size_t k) -> unsigned { return i + k < text.size() ? static_cast<unsigned char>(text[i + k]) : 0u; };
-    const auto tail = [&](std::size_t n) {
-        for (std::size_t k = 1; k <= n; ++k)
-            if ((byte(k) & 0xC0u) != 0x80u) return false;
-        return true;
-    };
-    const unsigned b0 = byte(0), b1 = byte(1);
-    if (b0 < 0x80) return {b0, 1};
-    if (b0 >= 0xC2 && b0 <= 0xDF && tail(1)) return {((b0 & 0x1Fu) << 6) | (b1 & 0x3Fu), 2};
-    if (b0 >= 0xE0 && b0 <= 0xEF && tail(2) && !(b0 == 0xE0 && b1 < 0xA0) && !(b0 == 0xED && b1 > 0x9F))
-        return {((b0 & 0x0Fu) << 12) | ((b1 & 0x3Fu) << 6) | (byte(2) & 0x3Fu), 3};
-    if (b0 >= 0xF0 && b0 <= 0xF4 && tail(3) && !(b0 == 0xF0 && b1 < 0x90) && !(b0 == 0xF4 && b1 > 0x8F))
-        return {((b0 & 0x07u) << 18) | ((b1 & 0x3Fu) << 12) | ((byte(2) & 0x3Fu) << 6) | (byte(3) & 0x3Fu), 4};
-    return {0, 0};
-}
 
 enum class Context { bare, comment, basic, literal, multiline_basic, multiline_literal };
 
@@ -48,7 +25,7 @@ std::string ascii_toml(std::string_view text, const std::string& name) {
     const auto fail = [&](const std::string& what) { throw InputError(fmt::format("{}:{}:{}: {}", name, line, column, what)); };
     const auto starts = [&](std::size_t i, std::string_view s) { return text.substr(i, s.size()) == s; };
     for (std::size_t i = 0; i < text.size();) {
-        const CodePoint cp = decode(text, i);
+        const CodePoint cp = decode_utf8(text, i);
         if (cp.length == 0) fail("the file is not valid UTF-8");
         std::size_t length = cp.length;  // bytes copied as they are
         if (cp.length > 1) {
