@@ -49,6 +49,18 @@ TEST_CASE("outputs: a user's files in the output directory are never deleted or 
     CHECK_THAT(blocked.err, Catch::Contains("report.md exists and was not written by rotbench; it is never replaced"));
     CHECK(read(other / "report.md") == "my report\n");
     CHECK_FALSE(fs::exists(other / "results.csv"));
+    // So is a user's file where rotbench writes a folder (the runs would fail at their end).
+    for (const char* folder : {"plots", "series", "snapshots", "walls"}) {
+        INFO(folder);
+        fs::remove_all(other);
+        fs::create_directories(other);
+        write(other / folder, "mine\n");
+        const Cli taken = cli(with(one_run, {"--out", other.string(), "--overwrite"}));
+        CHECK(taken.status == 2);
+        CHECK_THAT(taken.err, Catch::Contains((other / folder).string() + " is a file where rotbench writes a directory"));
+        CHECK(read(other / folder) == "mine\n");
+        CHECK_FALSE(fs::exists(other / "results.csv"));
+    }
     fs::remove_all(dir);
     fs::remove_all(other);
 }

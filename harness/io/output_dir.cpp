@@ -48,7 +48,7 @@ bool empty_directory(const fs::path& dir) {
 }
 
 // The folders a command writes into: taken by a file, they would fail it mid-way.
-const char* const subfolders[] = {"plots", "series", "partial", meta};
+const char* const subfolders[] = {"plots", "series", "snapshots", "walls", "partial", meta};
 
 }  // namespace
 
