@@ -42,14 +42,21 @@ std::string curve_script(const std::string& scene, double dt, const std::vector<
 
 }  // namespace
 
-std::string snapshot_svg(const std::string& title, const std::vector<std::vector<double>>& rows) {
-    std::map<double, std::vector<const std::vector<double>*>> instants;
+std::string snapshot_svg(const std::string& title, const std::vector<std::vector<double>>& rows,
+                         const std::vector<std::vector<double>>& walls) {
+    std::map<double, std::vector<const std::vector<double>*>> instants, segments;
     double x_lo = INFINITY, x_hi = -INFINITY, z_lo = INFINITY, z_hi = -INFINITY, y_lo = INFINITY, y_hi = -INFINITY;
     for (const auto& r : rows) {
         instants[r[0]].push_back(&r);
         x_lo = std::min(x_lo, r[1] - r[4]), x_hi = std::max(x_hi, r[1] + r[4]);
         y_lo = std::min(y_lo, r[2]), y_hi = std::max(y_hi, r[2]);
         z_lo = std::min(z_lo, r[3] - r[4]), z_hi = std::max(z_hi, r[3] + r[4]);
+    }
+    for (const auto& w : walls) {
+        if (!instants.count(w[0])) continue;  // walls only where there are stones to draw them with
+        segments[w[0]].push_back(&w);
+        x_lo = std::min({x_lo, w[1], w[3]}), x_hi = std::max({x_hi, w[1], w[3]});
+        z_lo = std::min({z_lo, w[2], w[4]}), z_hi = std::max({z_hi, w[2], w[4]});
     }
     // One scale for every panel, so that the instants compare; 360 px for the tallest extent.
     const double pad = 12, head = 46, scale = 360.0 / std::max(z_hi - z_lo, 1e-9);
@@ -65,17 +72,27 @@ std::string snapshot_svg(const std::string& title, const std::vector<std::vector
     std::size_t p = 0;
     for (const auto& [t, spheres] : instants) {
         const double left = static_cast<double>(p++) * panel_w;
-        svg += fmt::format("<text x=\"{:.1f}\" y=\"38\">t = {:.3g} s</text>\n<g>\n", left + pad, t);
+        svg += fmt::format("<text x=\"{:.1f}\" y=\"38\">t = {:.3g} s</text>\n<g stroke=\"#333\" stroke-width=\"0.3\">\n", left + pad, t);
         std::vector<const std::vector<double>*> order = spheres;  // the farthest (largest y) first
         std::stable_sort(order.begin(), order.end(), [](auto* a, auto* b) { return (*a)[2] > (*b)[2]; });
         for (const auto* s : order) {
             const double depth = y_hi > y_lo ? ((*s)[2] - y_lo) / (y_hi - y_lo) : 0.0;  // 0 near, 1 far
             const int shade = static_cast<int>(std::lround(95 + 120 * depth));
-            svg += fmt::format("<circle cx=\"{:.1f}\" cy=\"{:.1f}\" r=\"{:.1f}\" fill=\"rgb({},{},{})\" stroke=\"#333\" stroke-width=\"0.3\"/>\n",
+            svg += fmt::format("<circle cx=\"{:.1f}\" cy=\"{:.1f}\" r=\"{:.1f}\" fill=\"rgb({},{},{})\"/>\n",
                                left + pad + ((*s)[1] - x_lo) * scale, head + pad + (z_hi - (*s)[3]) * scale, (*s)[4] * scale,
                                shade, static_cast<int>(shade * 0.85), static_cast<int>(shade * 0.7));
         }
         svg += "</g>\n";
+        if (const auto found = segments.find(t); found != segments.end()) {
+            svg += "<g stroke=\"#1f4e9c\" stroke-width=\"2\" stroke-linecap=\"square\">\n";
+            const auto at = [&](double x, double z) { return std::pair(left + pad + (x - x_lo) * scale, head + pad + (z_hi - z) * scale); };
+            for (const auto* w : found->second) {
+                const auto [x1, y1] = at((*w)[1], (*w)[2]);
+                const auto [x2, y2] = at((*w)[3], (*w)[4]);
+                svg += fmt::format("<line x1=\"{:.1f}\" y1=\"{:.1f}\" x2=\"{:.1f}\" y2=\"{:.1f}\"/>\n", x1, y1, x2, y2);
+            }
+            svg += "</g>\n";
+        }
     }
     return svg + "</svg>\n";
 }
@@ -97,14 +114,15 @@ std::string granular_pictures(const std::string& scene, double dt, const std::ve
     for (const RunResult* r : runs) {
         if (r->snapshots.empty()) continue;
         dir.write("snapshots/" + snapshot_file_name(r->spec), snapshot_csv(*r));
+        if (!r->walls.empty()) dir.write("walls/" + snapshot_file_name(r->spec), walls_csv(*r));
         const std::string name = fmt::format("snapshot_{}_{}_dt{}", scene, r->spec.scheme, dt_tag(dt));
         dir.write("plots/" + name + ".svg",
-                  snapshot_svg(fmt::format("{}, {}, dt = {:g} s{}: spheres seen along +y (lighter: farther)", scene, r->spec.scheme, dt,
+                  snapshot_svg(fmt::format("{}, {}, dt = {:g} s{}: spheres seen along +y (lighter: farther), walls in blue", scene, r->spec.scheme, dt,
                                            r->has("ensemble_size") ? ", first member of the ensemble" : ""),
-                               r->snapshots));
+                               r->snapshots, r->walls));
         pictures += fmt::format("![{}](plots/{}.svg)\n\n", name, name);
     }
-    if (!pictures.empty()) md += "The stones (data: `snapshots/`):\n\n" + pictures;
+    if (!pictures.empty()) md += "The stones and, in blue, the walls (data: `snapshots/`, `walls/`):\n\n" + pictures;
     return md;
 }
 

@@ -90,7 +90,7 @@ TEST_CASE("ensembles: --ensemble K runs each seeded scene K times, seeds seed ..
     CHECK_THROWS_AS(plan_sweep(spec), InputError);
 }
 
-TEST_CASE("ensembles: the members' curves become a band over the rows they share, and the first member's snapshots stay") {
+TEST_CASE("ensembles: the members' curves become a band over the rows they share, and the first member's pictures stay") {
     RunResult a = member("direct", 1, 1.0), b = member("direct", 2, 2.0), c = member("direct", 3, 3.0, "blew up at step 3");
     a.series_columns = b.series_columns = c.series_columns = {"t_open", "mass_left"};
     a.series = {{0.0, 6.0}, {0.01, 5.0}, {0.02, 4.0}};
@@ -98,12 +98,15 @@ TEST_CASE("ensembles: the members' curves become a band over the rows they share
     c.series = {{0.0, 100.0}, {0.01, 100.0}};  // failed: not in the band
     a.snapshots = {{0.0, 1.0, 2.0, 3.0, 0.1}};
     b.snapshots = {{0.0, 9.0, 9.0, 9.0, 0.1}};
+    a.walls = {{0.0, -1.0, 0.0, 1.0, 0.0}};
+    b.walls = {{0.0, -2.0, 0.0, 2.0, 0.0}};
     const std::vector<RunResult> collapsed = collapse_ensembles({a, b, c});
     REQUIRE(collapsed.size() == 1);
     const RunResult& band = collapsed.front();
     CHECK(band.series_columns == std::vector<std::string>{"t_open", "mass_left", "mass_left_min", "mass_left_max"});
     CHECK(band.series == std::vector<std::vector<double>>{{0.0, 7.0, 6.0, 8.0}, {0.01, 4.0, 3.0, 5.0}});
     CHECK(band.snapshots == a.snapshots);
+    CHECK(band.walls == a.walls);  // the walls of the same member's pictures
     // Members whose abscissae part ways share only the rows before.
     b.series = {{0.0, 8.0}, {0.015, 3.0}};
     CHECK(collapse_ensembles({a, b}).front().series == std::vector<std::vector<double>>{{0.0, 7.0, 6.0, 8.0}});

@@ -41,7 +41,8 @@ TEST_CASE("granular scenes: an ensemble split into shards merges into the unshar
     CHECK(metric(read_results(dir / "whole"), "silo_discharge", "direct", "ensemble_size") == 2);
     // The shards keep each member's curve and snapshots; merged, they give the whole run's band and pictures.
     CHECK(fs::exists(dir / "a" / "series" / "curve_silo_discharge_direct_dt2e-05_seed1.csv"));
-    for (const char* file : {"series/curve_silo_discharge_direct_dt2e-05.csv", "snapshots/silo_discharge_direct_dt2e-05.csv"}) {
+    for (const char* file : {"series/curve_silo_discharge_direct_dt2e-05.csv", "snapshots/silo_discharge_direct_dt2e-05.csv",
+                             "walls/silo_discharge_direct_dt2e-05.csv"}) {
         INFO(file);
         CHECK(read(dir / "merged" / file) == read(dir / "whole" / file));
     }

@@ -155,6 +155,7 @@ std::vector<RunResult> collapse_ensembles(const std::vector<RunResult>& runs) {
         for (const RunResult* m : members)  // the pictures of the first member that has them
             if (m->failure.empty() && !m->snapshots.empty()) {
                 c.snapshots = m->snapshots;
+                c.walls = m->walls;
                 break;
             }
         out.push_back(std::move(c));

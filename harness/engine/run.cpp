@@ -128,7 +128,9 @@ public:
                 r.series_columns = std::move(curve.columns);
                 r.series = std::move(curve.rows);
             }
-            r.snapshots = probe_->snapshots();
+            SceneProbe::Snapshots pictures = probe_->snapshots();
+            r.snapshots = std::move(pictures.spheres);
+            r.walls = std::move(pictures.walls);
         }
     }
 

@@ -42,6 +42,7 @@ struct RunResult {
     std::vector<std::vector<double>> series;
     // A granular scene's pictures (SceneProbe::snapshots): rows t, x, y, z, radius.
     std::vector<std::vector<double>> snapshots;
+    std::vector<std::vector<double>> walls;  // the walls at the same instants: rows t, x0, z0, x1, z1
     // The CPU time of each timing repeat, scaled to the whole run as cpu_seconds is: the
     // samples `rotbench compare` tests a cost change against.
     std::vector<double> timing_samples;

@@ -139,7 +139,7 @@ std::vector<std::vector<double>> parse_table(const std::string& text, const std:
     return rows;
 }
 
-// The series and snapshots of the runs that recorded them (`files`: path under the directory -> text).
+// The series, snapshots and walls of the runs that recorded them (`files`: path under the directory -> text).
 void add_series(const std::map<std::string, std::string>& files, const std::string& source, std::vector<RunResult>& results) {
     for (auto& r : results) {
         if (r.spec.kind != RunKind::trajectory) continue;
@@ -154,6 +154,11 @@ void add_series(const std::map<std::string, std::string>& files, const std::stri
             std::vector<std::string> columns;
             r.snapshots = parse_table(found->second, source + "/" + found->first, columns);
             if (columns != snapshot_columns) throw InputError(source + "/" + found->first + ": expected the columns t,x,y,z,radius");
+        }
+        if (const auto found = files.find("walls/" + snapshot_file_name(r.spec)); found != files.end()) {
+            std::vector<std::string> columns;
+            r.walls = parse_table(found->second, source + "/" + found->first, columns);
+            if (columns != wall_columns) throw InputError(source + "/" + found->first + ": expected the columns t,x0,z0,x1,z1");
         }
     }
 }
@@ -177,7 +182,7 @@ std::vector<RunResult> read_results(const std::filesystem::path& dir) {
     auto results = parse_runs(text(dir / "runs.csv"), dir.string(), counts);
     add_metrics(text(dir / "results.csv"), dir.string(), counts, results);
     std::map<std::string, std::string> files;
-    for (const std::string folder : {"series", "snapshots"}) {
+    for (const std::string folder : {"series", "snapshots", "walls"}) {
         std::error_code ec;
         for (const auto& e : std::filesystem::directory_iterator(dir / folder, ec))
             if (e.path().extension() == ".csv") files.emplace(folder + "/" + e.path().filename().string(), read_input_file(e.path(), "cannot read"));

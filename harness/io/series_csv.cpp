@@ -39,11 +39,13 @@ void write_series_file(const RunResult& r, const OutputDir& dir) { dir.write("se
 
 std::string snapshot_file_name(const RunSpec& spec) { return run_tag(spec) + ".csv"; }
 std::string snapshot_csv(const RunResult& r) { return table_csv(snapshot_columns, r.snapshots); }
+std::string walls_csv(const RunResult& r) { return table_csv(wall_columns, r.walls); }
 
 void write_run_series(const std::vector<RunResult>& results, const OutputDir& dir) {
     for (const auto& r : results) {
         if (!r.series.empty()) write_series_file(r, dir);
         if (!r.snapshots.empty()) dir.write("snapshots/" + snapshot_file_name(r.spec), snapshot_csv(r));
+        if (!r.walls.empty()) dir.write("walls/" + snapshot_file_name(r.spec), walls_csv(r));
     }
 }
 

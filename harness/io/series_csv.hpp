@@ -25,8 +25,11 @@ void write_series_file(const RunResult& r, const OutputDir& dir);  // dir/series
 std::string snapshot_file_name(const RunSpec& spec);
 inline const std::vector<std::string> snapshot_columns = {"t", "x", "y", "z", "radius"};
 std::string snapshot_csv(const RunResult& r);
+// Its walls at the same instants, seen along +y: the same name, under walls/.
+inline const std::vector<std::string> wall_columns = {"t", "x0", "z0", "x1", "z1"};
+std::string walls_csv(const RunResult& r);
 
-// DIR/series/*.csv and DIR/snapshots/*.csv for every run that recorded them (a shard keeps them
+// DIR/series/*.csv, DIR/snapshots/*.csv and DIR/walls/*.csv for every run that recorded them (a shard keeps them
 // all for merge).
 void write_run_series(const std::vector<RunResult>& results, const OutputDir& dir);
 

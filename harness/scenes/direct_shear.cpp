@@ -209,10 +209,10 @@ private:
             }
             return c;
         }
-        std::vector<std::vector<double>> snapshots() const override {
-            std::vector<std::vector<double>> rows;
-            if (!samples_.empty()) scene_.add_snapshot(last_t_, last_, rows);
-            return rows;
+        Snapshots snapshots() const override {
+            Snapshots pictures;
+            if (!samples_.empty()) scene_.add_snapshot(last_t_, last_, pictures);
+            return pictures;
         }
 
     private:

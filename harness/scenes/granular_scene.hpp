@@ -6,6 +6,7 @@
 
 #include "harness/granular/cluster_system.hpp"
 #include "harness/granular/random_stream.hpp"
+#include "harness/granular/wall_outline.hpp"
 #include "harness/scenes/scene.hpp"
 
 #include <memory>
@@ -53,9 +54,12 @@ protected:
         system_ = std::make_unique<ClusterSystem>(ballast_shapes(params.positive("density")), material_, friction_, Vec3(0.0, 0.0, -g));
     }
     std::size_t cluster_count() const { return static_cast<std::size_t>(params.number("clusters")); }
-    // The spheres of every stone at time t, as SceneProbe::snapshots rows {t, x, y, z, radius}.
-    void add_snapshot(double t, const Bodies& b, std::vector<std::vector<double>>& rows) const {
-        for (const Sphere& s : system_->world_spheres(b)) rows.push_back({t, s.centre.x(), s.centre.y(), s.centre.z(), s.radius});
+    // The spheres of every stone at time t and the walls as they stand, as SceneProbe::Snapshots rows.
+    void add_snapshot(double t, const Bodies& b, SceneProbe::Snapshots& pictures) const {
+        const std::vector<Sphere> spheres = system_->world_spheres(b);
+        for (const Sphere& s : spheres) pictures.spheres.push_back({t, s.centre.x(), s.centre.y(), s.centre.z(), s.radius});
+        for (const auto& [x0, z0, x1, z1] : wall_segments(system_->walls, picture_frame(spheres, system_->walls)))
+            pictures.walls.push_back({t, x0, z0, x1, z1});
     }
     RandomStream random() const { return RandomStream(static_cast<std::uint64_t>(params.number("seed"))); }
     // The largest distance of a stone's surface from its centre of mass.

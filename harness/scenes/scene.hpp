@@ -32,8 +32,12 @@ public:
         std::vector<std::vector<double>> rows;
     };
     virtual Curve curve() const { return {}; }
-    // The spheres of every body at a few instants, as rows {t, x, y, z, radius}; none by default.
-    virtual std::vector<std::vector<double>> snapshots() const { return {}; }
+    // Pictures at a few instants: the spheres of every body, as rows {t, x, y, z, radius}, and
+    // the walls seen along +y, as segments {t, x0, z0, x1, z1}; none by default.
+    struct Snapshots {
+        std::vector<std::vector<double>> spheres, walls;
+    };
+    virtual Snapshots snapshots() const { return {}; }
 };
 
 // The bodies, their initial state and their force/torque model come from Dynamics

@@ -79,7 +79,9 @@ public:
         const double h = 0.5 * width_;
         for (const Vec3& n : std::vector<Vec3>{Vec3::UnitX(), -Vec3::UnitX(), Vec3::UnitY(), -Vec3::UnitY()})
             system_->walls.push_back({n, -h, wall_friction, Vec3::Zero(), inside, std::nullopt});
-        system_->walls.push_back({Vec3::UnitZ(), 0.0, wall_friction, Vec3::Zero(), {Vec3::Constant(-INFINITY), Vec3::Constant(INFINITY)}, std::nullopt});
+        // The bottom spans the silo's footprint only, so that a stone on the floor beside the
+        // silo is not under a shelf (and the pictures draw the silo as it is).
+        system_->walls.push_back({Vec3::UnitZ(), 0.0, wall_friction, Vec3::Zero(), {Vec3(-h, -h, -INFINITY), Vec3(h, h, INFINITY)}, std::nullopt});
         system_->walls.push_back({Vec3::UnitZ(), -drop_, floor_friction, Vec3::Zero(), {Vec3::Constant(-INFINITY), Vec3::Constant(INFINITY)}, std::nullopt});
     }
 
@@ -127,10 +129,10 @@ private:
             for (std::size_t k = 0; k < curve_.size(); k += 10) c.rows.push_back({curve_[k].first, curve_[k].second});
             return c;
         }
-        std::vector<std::vector<double>> snapshots() const override {
-            std::vector<std::vector<double>> rows = pictures_;
-            if (!curve_.empty()) scene_.add_snapshot(curve_.back().first + scene_.fill_time_, last_, rows);
-            return rows;
+        Snapshots snapshots() const override {
+            Snapshots pictures = pictures_;
+            if (!curve_.empty()) scene_.add_snapshot(curve_.back().first + scene_.fill_time_, last_, pictures);
+            return pictures;
         }
         std::vector<std::pair<std::string, double>> metrics() const override {
             if (curve_.empty()) return {{"discharge_time", NAN}, {"mass_flow_rate", NAN}, {"repose_angle", NAN}, {"mass_left_end", NAN}};
@@ -187,7 +189,7 @@ private:
         std::vector<std::pair<double, double>> curve_;  // time since opening, mass left
         double next_sample_ = 0;
         Bodies last_;
-        std::vector<std::vector<double>> pictures_;  // at the opening and halfway
+        Snapshots pictures_;  // at the opening and halfway
         int pictured_ = 0;
     };
 
