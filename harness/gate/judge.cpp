@@ -13,7 +13,6 @@ namespace rotbench {
 namespace {
 
 constexpr double eps = std::numeric_limits<double>::epsilon();
-constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 // How far an observed order may lie from the claimed one (docs/gate.md).
 constexpr double order_tolerance = 0.2;
 
