@@ -97,6 +97,7 @@ TEST_CASE("an interrupted sweep keeps its finished runs, and --resume ends with 
             CHECK_THAT(refused.err, Catch::Contains("holds an interrupted run"));
 
             const Cli resumed = cli({"run", "--resume", out.string()});
+            INFO(resumed.err);  // why, should it ever fail (it did once, on a loaded machine)
             REQUIRE(resumed.status == 0);
             CHECK_THAT(resumed.out, Catch::Contains("resuming: " + std::to_string(kept) + " of " + std::to_string(sweep_runs) + " runs were finished"));
             same_outputs(dir / "whole", out);
