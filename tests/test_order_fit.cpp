@@ -64,6 +64,21 @@ TEST_CASE("order fit: pre-asymptotic points are left out") {
     CHECK(f.dt_max < 0.4);
 }
 
+TEST_CASE("order fit: a saturated error at the coarse steps does not hide the asymptotic range") {
+    // As fincham on dzhanibekov: an O(1) error that wanders (1.5, then 1.3 at half the step)
+    // before it falls at third order from dt = 0.025. Read as a round-off plateau, the rise
+    // from 1.3 to 2.2 used to drop every finer point: "insufficient".
+    auto points = ladder(0.025, 6, [](double dt) { return 2.2 * std::pow(dt / 0.025, 3); });
+    points.insert(points.begin(), {{0.1, 1.5}, {0.05, 1.3}});
+    const OrderFit f = fit_order(points);
+    REQUIRE(f.sufficient);
+    CHECK(f.order == Approx(3.0).margin(1e-9));
+    CHECK(f.dt_max == 0.025);
+    CHECK(f.points == 6);
+    // A ladder whose finest error is its largest never converges: no order.
+    CHECK_FALSE(fit_order({{0.1, 1e-2}, {0.05, 1e-4}, {0.025, 1e-6}, {0.0125, 0.5}}).sufficient);
+}
+
 TEST_CASE("order fit: fewer than 3 usable points is insufficient, not a number") {
     CHECK_FALSE(fit_order(ladder(0.1, 2, [](double dt) { return dt; })).sufficient);
     CHECK_FALSE(fit_order({{0.1, 1e-3}, {0.05, NAN}, {0.025, 1e-20}, {0.0125, 2e-4}}).sufficient);

@@ -9,7 +9,11 @@ namespace rotbench {
 OrderFit fit_order(std::vector<OrderPoint> points, double floor) {
     std::erase_if(points, [&](const OrderPoint& p) { return !std::isfinite(p.error) || !(p.error > floor) || !(p.dt > 0); });
     std::sort(points.begin(), points.end(), [](const OrderPoint& a, const OrderPoint& b) { return a.dt > b.dt; });
-    for (std::size_t i = 1; i < points.size(); ++i)  // rule 2: the plateau
+    // Rule 2: coarser than the largest error, the error still grows as dt shrinks (a saturated
+    // phase error); then the plateau.
+    points.erase(points.begin(), std::max_element(points.begin(), points.end(),
+                                                  [](const OrderPoint& a, const OrderPoint& b) { return a.error < b.error; }));
+    for (std::size_t i = 1; i < points.size(); ++i)
         if (!(points[i].error < 0.9 * points[i - 1].error)) {
             points.resize(i);
             break;

@@ -4,9 +4,11 @@
 // The rule that picks the range (documented in the report):
 //  1. Points whose error is not finite or not > 0 (failed runs) are dropped, and so are
 //     points below the round-off floor, `floor` (1e-13 by default: ~500 ulps).
-//  2. Going from the coarsest dt to the finest, the first point whose error is no longer
-//     smaller than 0.9 x the error at the previous (coarser) dt starts a plateau: it and
-//     every finer point are at round-off and are dropped.
+//  2. Points coarser than the one of largest error are dropped: there the error still grows
+//     as dt shrinks (an O(1) phase error saturates, and wanders). Going from that point to
+//     the finest, the first point whose error is no longer smaller than 0.9 x the error at
+//     the previous (coarser) dt starts a plateau: it and every finer point are at round-off
+//     and are dropped.
 //  3. The range is the longest run of points ending at the finest whose local orders all
 //     lie within 0.3 of their median. Coarser points are pre-asymptotic.
 //  4. Fewer than 3 points in the range: "insufficient", no number.
