@@ -29,8 +29,8 @@ std::string snapshot_csv(const RunResult& r);
 inline const std::vector<std::string> wall_columns = {"t", "x0", "z0", "x1", "z1"};
 std::string walls_csv(const RunResult& r);
 
-// DIR/series/*.csv, DIR/snapshots/*.csv and DIR/walls/*.csv for every run that recorded them (a shard keeps them
-// all for merge).
+// DIR/series/*.csv, DIR/snapshots/*.csv and DIR/walls/*.csv for every run that recorded
+// them (a shard keeps them all for merge).
 void write_run_series(const std::vector<RunResult>& results, const OutputDir& dir);
 
 }  // namespace rotbench
