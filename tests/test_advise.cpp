@@ -54,19 +54,21 @@ TEST_CASE("advise: every recommended dt lies below its measured limit, and verif
         }
 }
 
-TEST_CASE("advise: a scheme whose ladder ends before its error is asymptotic is followed down, not refused") {
+TEST_CASE("advise: a scheme whose ladder ends before its error is asymptotic is followed down, not refused", "[study]") {
     // On this contact zvw_corrected is stable up to about 4.6e-3 s, and its ladder of 8 rungs
     // from there ends at 3.2e-5 s with a relative error of 0.11, above the 0.1 where the order
-    // is fitted: with no order to extrapolate with, it used to be refused, while zvw, whose
-    // errors are no smaller but whose limit is 70 times lower, was recommended.
+    // is fitted; spiral's ends at 1.7e-5 s with one rung below 0.1. With no order to
+    // extrapolate with, both used to be refused, while zvw, whose errors are no smaller but
+    // whose limit is 70 times lower, was recommended. (A [study]: at the dt of 2e-6 s they need,
+    // the runs and their references take minutes under the sanitizers.)
     const Particle particle{Eigen::Vector3d(1, 2, 3), 1, 1e4, 0, 10, 0};
-    const Advice a = advise(particle, 1e-3, {"zvw_corrected", "zvw"}, true, 2);
+    const Advice a = advise(particle, 1e-2, {"zvw_corrected", "spiral"}, true, 2);
     REQUIRE(a.recommendations.size() == 2);
     for (const auto& r : a.recommendations) {
         INFO(r.scheme << " at dt " << r.dt << " (" << r.how << "), limit " << r.dt_stability);
         CHECK_THAT(r.how, Catch::Contains("after extrapolating with order"));
         CHECK(r.verified_stable);
-        CHECK(r.verified_error <= 1e-3);
+        CHECK(r.verified_error <= 1e-2);
     }
 }
 
