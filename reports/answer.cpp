@@ -14,7 +14,7 @@ namespace {
 const RunResult* coarsest(const std::vector<const RunResult*>& sorted) { return sorted.front(); }
 
 // A run's CPU time scaled to a run of the same duration at `dt`.
-double seconds_at(const RunResult& r, double dt) { return r.value("ns_per_step") * 1e-9 * (r.value("steps") * r.spec.dt) / dt; }
+double seconds_at(const RunResult& r, double dt) { return r.value(metric::ns_per_step) * 1e-9 * (r.value(metric::steps) * r.spec.dt) / dt; }
 
 std::vector<std::string> ranking_scenes(const std::vector<LargestDt>& answers) {
     std::vector<std::string> found;
@@ -46,13 +46,13 @@ std::string limit_cell(const LargestDt& a) {
 
 }  // namespace
 
-double relative_omega_error(const RunResult& r) { return r.value("omega_err_max") / r.value("omega_ref_max"); }
+double relative_omega_error(const RunResult& r) { return r.value(metric::omega_err_max) / r.value(metric::omega_ref_max); }
 
 LargestDt largest_dt(const std::vector<const RunResult*>& runs, const OrderRow& order, double tolerance) {
     LargestDt a{order.scene, order.scheme, tolerance, "never", NAN, NAN, NAN, ""};
     std::vector<const RunResult*> ok;
     for (const RunResult* r : runs)
-        if (r->failure.empty() && std::isfinite(relative_omega_error(*r)) && std::isfinite(r->value("ns_per_step"))) ok.push_back(r);
+        if (r->failure.empty() && std::isfinite(relative_omega_error(*r)) && std::isfinite(r->value(metric::ns_per_step))) ok.push_back(r);
     if (ok.empty()) return a;
     std::sort(ok.begin(), ok.end(), [](const RunResult* x, const RunResult* y) { return x->spec.dt > y->spec.dt; });
     const auto set = [&](const char* how, const RunResult& r, double dt) {
@@ -78,13 +78,13 @@ std::vector<LargestDt> largest_dts(const ResultSet& set, const std::vector<Order
     std::vector<LargestDt> out;
     for (const double tolerance : tolerances)
         for (const auto& o : orders) {
-            if (o.metric != "omega_err_max") continue;
+            if (o.metric != metric::omega_err_max) continue;
             std::vector<const RunResult*> runs;
             double omega_ref = 0;
             for (const auto& r : set.runs)
                 if (r.spec.scene == o.scene && r.spec.scheme == o.scheme) {
                     runs.push_back(&r);
-                    if (r.has("omega_ref_max")) omega_ref = std::max(omega_ref, r.value("omega_ref_max"));
+                    if (r.has(metric::omega_ref_max)) omega_ref = std::max(omega_ref, r.value(metric::omega_ref_max));
                 }
             if (omega_ref <= 0) continue;
             LargestDt a = largest_dt(runs, o, tolerance);

@@ -13,16 +13,13 @@ namespace rotbench {
 
 std::string plotted_error(const std::vector<const RunResult*>& runs) {
     for (const RunResult* r : runs)
-        if (r->has("omega_err_max")) return "omega_err_max";
-    return "energy_drift_max";
+        if (r->has(metric::omega_err_max)) return metric::omega_err_max;
+    return metric::energy_drift_max;
 }
 
-std::string error_label(const std::string& metric) {
-    if (metric == "omega_err_max") return "max |w - w_ref| (rad/s)";
-    if (metric == "orientation_err_max") return "max angle(q, q_ref) (rad)";
-    if (metric == "energy_drift_max") return "max |E - E0| / |E0| (relative)";
-    if (metric == "momentum_drift_max") return "max |L - L0| / |L0| (relative)";
-    return metric;
+std::string error_label(const std::string& name) {
+    const MetricInfo* m = find_metric(name);
+    return m && !m->label.empty() ? std::string(m->label) : name;
 }
 
 std::string convergence_plots(const std::string& scene, const std::vector<const RunResult*>& runs, const ResultSet& set,
@@ -39,10 +36,10 @@ std::string convergence_plots(const std::string& scene, const std::vector<const 
         for (const RunResult* r : runs) {
             const double e = r->value(metric);
             if (r->spec.scheme != scheme || !std::isfinite(e) || !(e > 0)) continue;
-            data += fmt::format("{} {} {}\n", format_number(r->spec.dt), format_number(e), format_number(r->value("cpu_seconds")));
+            data += fmt::format("{} {} {}\n", format_number(r->spec.dt), format_number(e), format_number(r->value(metric::cpu_seconds)));
             lo = std::min(lo, r->spec.dt), hi = std::max(hi, r->spec.dt);
             e_lo = std::min(e_lo, e), e_hi = std::max(e_hi, e);
-            if (r->value("cpu_seconds") > 0) c_lo = std::min(c_lo, r->value("cpu_seconds")), c_hi = std::max(c_hi, r->value("cpu_seconds"));
+            if (r->value(metric::cpu_seconds) > 0) c_lo = std::min(c_lo, r->value(metric::cpu_seconds)), c_hi = std::max(c_hi, r->value(metric::cpu_seconds));
         }
         data += "\n\n";
     }

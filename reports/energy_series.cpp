@@ -42,7 +42,7 @@ double final_error(const RunResult& r) { return r.series.empty() ? NAN : std::ab
 std::string energy_slopes(const std::map<std::pair<std::string, double>, std::vector<const RunResult*>>& groups) {
     std::map<std::string, std::map<std::string, std::vector<std::pair<double, double>>>> points;  // scene, scheme
     for (const auto& [key, runs] : groups)
-        for (const RunResult* r : runs) points[key.first][r->spec.scheme].push_back({r->spec.dt, r->value("energy_drift_max")});
+        for (const RunResult* r : runs) points[key.first][r->spec.scheme].push_back({r->spec.dt, r->value(metric::energy_drift_max)});
     std::string md;
     for (const auto& [scene, by_scheme] : points) {
         std::string line;
@@ -112,7 +112,7 @@ std::string energy_series_section(const ResultSet& set, const OutputDir& dir, co
         });
         md += "| scheme | energy error at the end (abs.) | largest energy error (abs.) |\n|---|---:|---:|\n";
         for (const RunResult* r : ranked)
-            md += fmt::format("| {} | {:.3e} | {:.3e} |\n", r->spec.scheme, final_error(*r), r->value("energy_drift_max"));
+            md += fmt::format("| {} | {:.3e} | {:.3e} |\n", r->spec.scheme, final_error(*r), r->value(metric::energy_drift_max));
         std::string order;
         for (const RunResult* r : ranked) order += (order.empty() ? "" : " < ") + r->spec.scheme;
         md += fmt::format("\nOrdering by the final error, best first: {}.\n", order);

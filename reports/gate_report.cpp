@@ -142,8 +142,8 @@ std::string gate_summary_json(const GateResult& result, const std::string& gate_
     }
     // The cost of each scheme where the gate timed it: ns per step of its timed runs.
     for (const auto& r : result.runs)
-        if (r.spec.timed && std::isfinite(r.value("ns_per_step")) && by_scheme.count(r.spec.scheme))
-            by_scheme[r.spec.scheme]["ns_per_step"][r.spec.scene + " dt=" + format_number(r.spec.dt)] = r.value("ns_per_step");
+        if (r.spec.timed && std::isfinite(r.value(metric::ns_per_step)) && by_scheme.count(r.spec.scheme))
+            by_scheme[r.spec.scheme][metric::ns_per_step][r.spec.scene + " dt=" + format_number(r.spec.dt)] = r.value(metric::ns_per_step);
     json schemes_json = json::array();
     for (const auto& [scheme, ok] : schemes(result)) schemes_json.push_back(by_scheme[scheme]);
     json warnings = json::array();

@@ -35,7 +35,7 @@ std::string curve_script(const std::string& scene, double dt, const std::vector<
         if (band) s += fmt::format("'{}' using 1:3:4 with filledcurves {} notitle, \\\n     ", file, series_colour(i));
         // Eight colours; past them the lines are dashed.
         s += fmt::format("'{}' using 1:2 with lines lw 1.8 {} dt {} title '{}{}'{}", file, series_colour(i), 1 + i / 8, r.spec.scheme,
-                         band ? fmt::format(" (mean of {:.0f})", r.value("ensemble_size")) : "", i + 1 < runs.size() ? ", \\\n     " : "\n");
+                         band ? fmt::format(" (mean of {:.0f})", r.value(metric::ensemble_size)) : "", i + 1 < runs.size() ? ", \\\n     " : "\n");
     }
     return s;
 }
@@ -118,7 +118,7 @@ std::string granular_pictures(const std::string& scene, double dt, const std::ve
         const std::string name = fmt::format("snapshot_{}_{}_dt{}", scene, r->spec.scheme, dt_tag(dt));
         dir.write("plots/" + name + ".svg",
                   snapshot_svg(fmt::format("{}, {}, dt = {:g} s{}: spheres seen along +y (lighter: farther), walls in blue", scene, r->spec.scheme, dt,
-                                           r->has("ensemble_size") ? ", first member of the ensemble" : ""),
+                                           r->has(metric::ensemble_size) ? ", first member of the ensemble" : ""),
                                r->snapshots, r->walls));
         pictures += fmt::format("![{}](plots/{}.svg)\n\n", name, name);
     }

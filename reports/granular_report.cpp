@@ -32,9 +32,9 @@ const std::vector<Published> published = {
     {"silo_discharge", "repose_angle", "direct", "35.8°, 4.78 %"},
     {"silo_discharge", "repose_angle", "munjiza_rk4", "37.3°, 0.80 %"},
     {"silo_discharge", "repose_angle", "zvw_corrected", "37.6°"},
-    {"silo_discharge", "cpu_seconds_per_simulated_second", "direct", "17.77 h/s, 0.23 %"},
-    {"silo_discharge", "cpu_seconds_per_simulated_second", "munjiza_rk4", "17.76 h/s, 0.19 %"},
-    {"silo_discharge", "cpu_seconds_per_simulated_second", "zvw_corrected", "17.73 h/s"},
+    {"silo_discharge", metric::cpu_seconds_per_simulated_second, "direct", "17.77 h/s, 0.23 %"},
+    {"silo_discharge", metric::cpu_seconds_per_simulated_second, "munjiza_rk4", "17.76 h/s, 0.19 %"},
+    {"silo_discharge", metric::cpu_seconds_per_simulated_second, "zvw_corrected", "17.73 h/s"},
     {"direct_shear", "shear_stress_final", "direct", "23.37 / 22.94 / 15.94 % at 27 / 51 / 75 kPa"},
     {"direct_shear", "shear_stress_final", "munjiza_rk4", "0.59 / 0.47 / 0.26 % at 27 / 51 / 75 kPa"},
 };
@@ -82,7 +82,7 @@ std::string granular_section(const ResultSet& set, const OutputDir& dir) {
         std::map<double, std::vector<const RunResult*>> by_dt;
         for (const RunResult* r : runs) by_dt[r->spec.dt].push_back(r);
         for (const auto& [dt, group] : by_dt) {
-            const double members = group.front()->has("ensemble_size") ? group.front()->value("ensemble_size") : 1.0;
+            const double members = group.front()->has(metric::ensemble_size) ? group.front()->value(metric::ensemble_size) : 1.0;
             md += fmt::format("### `{}` at dt = {:g} s, ensemble of {:.0f}\n\n", scene.scene, dt, members);
             for (const std::string& metric : scene.metrics) {
                 md += fmt::format("| {} | mean ± 95 % | difference from {} | seed 000 |\n|---|--:|--:|---|\n", metric,
@@ -95,14 +95,14 @@ std::string granular_section(const ResultSet& set, const OutputDir& dir) {
             md += "Cost of a whole DEM step (contact search and forces included), measured in the runs themselves:\n\n"
                   "| scheme | CPU s per simulated s | rotation's share of a step | seed 000 (Table 4) |\n|---|--:|--:|---|\n";
             for (const RunResult* r : group)
-                md += fmt::format("| {} | {} | {} | {} |\n", r->spec.scheme, number(r->value("cpu_seconds_per_simulated_second")),
-                                  std::isfinite(r->value("rotation_share")) ? fmt::format("{:.1f} %", 100.0 * r->value("rotation_share")) : "—",
-                                  published_for(scene.scene, "cpu_seconds_per_simulated_second", r->spec.scheme));
+                md += fmt::format("| {} | {} | {} | {} |\n", r->spec.scheme, number(r->value(metric::cpu_seconds_per_simulated_second)),
+                                  std::isfinite(r->value(metric::rotation_share)) ? fmt::format("{:.1f} %", 100.0 * r->value(metric::rotation_share)) : "—",
+                                  published_for(scene.scene, metric::cpu_seconds_per_simulated_second, r->spec.scheme));
             md += "\n";
             for (const RunResult* r : group)
-                if (r->value("ensemble_failed") > 0 || !r->failure.empty())
+                if (r->value(metric::ensemble_failed) > 0 || !r->failure.empty())
                     md += fmt::format("- {}: {:.0f} of {:.0f} runs failed{}.\n", r->spec.scheme,
-                                      r->has("ensemble_failed") ? r->value("ensemble_failed") : 1.0, members,
+                                      r->has(metric::ensemble_failed) ? r->value(metric::ensemble_failed) : 1.0, members,
                                       r->failure.empty() ? "" : ": " + r->failure);
             md += "\n" + granular_pictures(scene.scene, dt, group, dir);
         }

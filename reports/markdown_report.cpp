@@ -26,17 +26,12 @@
 namespace rotbench {
 namespace {
 
-// Columns of the per-scene tables, in this order, when any run of the scene has them.
-const std::vector<std::string> table_metrics = {
-    "omega_rms_x",       "omega_rms_y",        "omega_rms_z",       "omega_err_max",  "orientation_err_max",
-    "energy_drift_max",  "energy_drift_rate",  "momentum_drift_max", "quat_norm_err_max", "steps",
-    "force_evals",       "ns_per_step",        "unstable"};
-
-std::string cell(const std::string& metric, double v) {
-    if (std::isnan(v)) return "—";
-    if (metric == "steps" || metric == "force_evals" || metric == "unstable" || metric == "ns_per_step")
-        return fmt::format("{:.0f}", v);
-    return fmt::format("{:.3e}", v);
+// Columns of the per-scene tables, in the metric table's order, when any run of the scene has them.
+std::vector<std::string> table_metrics() {
+    std::vector<std::string> out;
+    for (const auto& m : metric_table())
+        if (m.in_scene_table) out.emplace_back(m.name);
+    return out;
 }
 
 std::vector<std::string> unique_in_order(const std::vector<RunResult>& results, std::string RunSpec::*field) {
@@ -111,7 +106,7 @@ void scene_section(std::string& md, const SceneInfo& entry, const ResultSet& set
     const bool expectation =
         entry.reference != Scene::ReferenceKind::none && (entry.conserves_angular_momentum || entry.torque_depends_on_orientation);
     const bool torque = entry.torque_depends_on_orientation;
-    const auto metrics = present(order_metrics, runs);
+    const auto metrics = present(fitted_metrics(), runs);
     std::vector<std::string> order_columns = {"expected"};
     for (const auto& m : metrics) order_columns.push_back("order of " + m);
     md += table_head("scheme", order_columns);
@@ -128,7 +123,7 @@ void scene_section(std::string& md, const SceneInfo& entry, const ResultSet& set
     md += "\n";
 
     // Every run, in tables of at most 7 columns: scheme, dt and 5 metrics each.
-    const auto columns = present(table_metrics, runs);
+    const auto columns = present(table_metrics(), runs);
     md += "<details><summary>Every run</summary>\n\n";
     for (std::size_t from = 0; from < columns.size(); from += 5) {
         const std::vector<std::string> part(columns.begin() + from, columns.begin() + std::min(columns.size(), from + 5));
@@ -137,7 +132,7 @@ void scene_section(std::string& md, const SceneInfo& entry, const ResultSet& set
         md += table_head("scheme", run_columns);
         for (const RunResult* r : runs) {
             md += fmt::format("| {} | {:g} |", r->spec.scheme, r->spec.dt);
-            for (const auto& c : part) md += " " + cell(c, r->value(c)) + " |";
+            for (const auto& c : part) md += " " + metric_cell(c, r->value(c)) + " |";
             md += "\n";
         }
         md += "\n";
@@ -230,7 +225,7 @@ std::string markdown_report(const ResultSet& set, const std::string& command_lin
     const auto schemes = unique_in_order(results, &RunSpec::scheme);
 
     const Provenance p = provenance();
-    const auto failed = std::count_if(results.begin(), results.end(), [](const RunResult& r) { return r.value("unstable") != 0.0; });
+    const auto failed = std::count_if(results.begin(), results.end(), [](const RunResult& r) { return r.value(metric::unstable) != 0.0; });
     std::string md = "# rotbench report\n\n";
     md += fmt::format(
         "{} runs of {} scheme{} on {} scene{}, {} of them unstable or failed: which scheme meets which error at what dt, "
@@ -264,7 +259,7 @@ std::string markdown_report(const ResultSet& set, const std::string& command_lin
                     return std::isfinite(a.cpu_seconds) ? a.cpu_seconds : INFINITY;
             double dt = INFINITY, e = INFINITY;
             for (const auto& r : results)
-                if (r.spec.scene == scene && r.spec.scheme == scheme && r.spec.dt < dt) dt = r.spec.dt, e = r.value("energy_drift_max");
+                if (r.spec.scene == scene && r.spec.scheme == scheme && r.spec.dt < dt) dt = r.spec.dt, e = r.value(metric::energy_drift_max);
             return std::isfinite(e) ? e : INFINITY;
         });
     };

@@ -33,10 +33,10 @@ std::string range(double lo, double hi) {
 double finest_relative_error(const ResultSet& set, const std::string& scene, const std::string& scheme) {
     const RunResult* finest = nullptr;
     for (const auto& r : set.runs)
-        if (r.spec.scene == scene && r.spec.scheme == scheme && std::isfinite(r.value("omega_err_max")) &&
+        if (r.spec.scene == scene && r.spec.scheme == scheme && std::isfinite(r.value(metric::omega_err_max)) &&
             (!finest || r.spec.dt < finest->spec.dt))
             finest = &r;
-    return finest ? finest->value("omega_err_max") / finest->value("omega_ref_max") : NAN;
+    return finest ? finest->value(metric::omega_err_max) / finest->value(metric::omega_ref_max) : NAN;
 }
 
 // "claimed → observed" for the angular-velocity error's order over the judged scenes.
@@ -51,7 +51,7 @@ std::string order_cell(const ResultSet& set, const std::vector<OrderRow>& orders
     double lo = INFINITY, hi = -INFINITY, stuck_lo = INFINITY, stuck_hi = -INFINITY;
     std::map<OrderStatus, int> count;
     for (const auto& o : orders) {
-        if (o.scheme != scheme || o.metric != "omega_err_max" || !judged_scene(set.scene(o.scene), with_torque)) continue;
+        if (o.scheme != scheme || o.metric != metric::omega_err_max || !judged_scene(set.scene(o.scene), with_torque)) continue;
         ++count[o.status];
         if (o.status == OrderStatus::fit) lo = std::min(lo, o.fit.order), hi = std::max(hi, o.fit.order);
         if (o.status == OrderStatus::no_convergence) {
@@ -85,11 +85,11 @@ std::string momentum_cell(const ResultSet& set, const std::string& scheme) {
     double worst = 0;
     bool kept = true, any = false;
     for (const RunResult* r : torque_free_runs(set, scheme)) {
-        const double v = r->value("momentum_drift_max");
+        const double v = r->value(metric::momentum_drift_max);
         if (!std::isfinite(v)) continue;
         any = true;
         worst = std::max(worst, v);
-        kept = kept && v <= round_off_bound(*r, "momentum_drift_max");
+        kept = kept && v <= round_off_bound(*r, metric::momentum_drift_max);
     }
     if (!any) return "—";
     return kept ? "kept" : fmt::format("not kept (≤ {:.1e})", worst);
@@ -99,13 +99,13 @@ std::string momentum_cell(const ResultSet& set, const std::string& scheme) {
 std::string energy_cell(const ResultSet& set, const std::string& scheme) {
     std::map<std::string, std::vector<const RunResult*>> by_scene;
     for (const RunResult* r : torque_free_runs(set, scheme))
-        if (set.scene(r->spec.scene).conserves_energy && std::isfinite(r->value("energy_drift_max"))) by_scene[r->spec.scene].push_back(r);
+        if (set.scene(r->spec.scene).conserves_energy && std::isfinite(r->value(metric::energy_drift_max))) by_scene[r->spec.scene].push_back(r);
     if (by_scene.empty()) return "—";
     bool kept = true, drifting = false, judged = false;
     double worst_rate = 0, worst_bounded = 0;
     for (const auto& [scene, runs] : by_scene) {
         const bool scene_kept = std::all_of(runs.begin(), runs.end(), [](const RunResult* r) {
-            return r->value("energy_drift_max") <= round_off_bound(*r, "energy_drift_max");
+            return r->value(metric::energy_drift_max) <= round_off_bound(*r, metric::energy_drift_max);
         });
         if (scene_kept) continue;
         kept = false;
@@ -116,9 +116,9 @@ std::string energy_cell(const ResultSet& set, const std::string& scheme) {
         judged = true;
         if (energy_growth(*coarse) >= std::sqrt(2.0)) {
             drifting = true;
-            worst_rate = std::max(worst_rate, std::abs(coarse->value("energy_drift_rate")));
+            worst_rate = std::max(worst_rate, std::abs(coarse->value(metric::energy_drift_rate)));
         } else {
-            worst_bounded = std::max(worst_bounded, coarse->value("energy_drift_max"));
+            worst_bounded = std::max(worst_bounded, coarse->value(metric::energy_drift_max));
         }
     }
     if (kept) return "kept";
@@ -189,7 +189,7 @@ std::string verdict_section(const ResultSet& set, const std::vector<OrderRow>& o
         const SchemeInfo* info = set.scheme(scheme);
         std::vector<double> ns;
         for (const auto& r : set.runs)
-            if (r.spec.scheme == scheme && r.spec.scene == cost_on && std::isfinite(r.value("ns_per_step"))) ns.push_back(r.value("ns_per_step"));
+            if (r.spec.scheme == scheme && r.spec.scene == cost_on && std::isfinite(r.value(metric::ns_per_step))) ns.push_back(r.value(metric::ns_per_step));
         const double cost = median(ns);
         md += fmt::format("| `{}`{} | {} | {} | {} | {} | {} | {} |\n", scheme, info && !info->claims.sound ? " (control)" : "",
                           order_cell(set, orders, scheme, false), order_cell(set, orders, scheme, true), momentum_cell(set, scheme),

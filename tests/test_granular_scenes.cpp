@@ -11,7 +11,7 @@ using namespace rotbench::test;
 
 namespace {
 
-double metric(const std::vector<RunResult>& runs, const std::string& scene, const std::string& scheme, const std::string& name) {
+double metric_of(const std::vector<RunResult>& runs, const std::string& scene, const std::string& scheme, const std::string& name) {
     for (const RunResult& r : runs)
         if (r.spec.scene == scene && r.spec.scheme == scheme) return r.value(name);
     return NAN;
@@ -38,7 +38,7 @@ TEST_CASE("granular scenes: an ensemble split into shards merges into the unshar
     const std::string members = read(dir / "whole" / "ensemble.csv");
     CHECK(members.find("silo_discharge,direct,2e-05,1,") != std::string::npos);
     CHECK(members.find("silo_discharge,direct,2e-05,2,") != std::string::npos);
-    CHECK(metric(read_results(dir / "whole"), "silo_discharge", "direct", "ensemble_size") == 2);
+    CHECK(metric_of(read_results(dir / "whole"), "silo_discharge", "direct", "ensemble_size") == 2);
     // The shards keep each member's curve and snapshots; merged, they give the whole run's band and pictures.
     CHECK(fs::exists(dir / "a" / "series" / "curve_silo_discharge_direct_dt2e-05_seed1.csv"));
     for (const char* file : {"series/curve_silo_discharge_direct_dt2e-05.csv", "snapshots/silo_discharge_direct_dt2e-05.csv",
@@ -58,23 +58,23 @@ TEST_CASE("granular scenes: the seed's three schemes on ensembles of the silo an
     const std::vector<RunResult> runs = read_results(dir);
     for (const std::string scheme : {"direct", "munjiza_rk4", "zvw_corrected"}) {
         INFO(scheme);
-        CHECK(metric(runs, "silo_discharge", scheme, "ensemble_size") == 2);
-        CHECK(metric(runs, "silo_discharge", scheme, "mass_flow_rate") > 0.0);  // it discharged
-        CHECK(std::isfinite(metric(runs, "silo_discharge", scheme, "mass_flow_rate_ci95")));
+        CHECK(metric_of(runs, "silo_discharge", scheme, "ensemble_size") == 2);
+        CHECK(metric_of(runs, "silo_discharge", scheme, "mass_flow_rate") > 0.0);  // it discharged
+        CHECK(std::isfinite(metric_of(runs, "silo_discharge", scheme, "mass_flow_rate_ci95")));
         // The servo holds the lid's stress, 27 kPa: its lag behind the sample's dilation is below 1 %
         // (5 mm/s of shear, 0.2 m/s of lid per unit error). Sampled as step means the members read
         // 26.5-27.0 kPa; read at single steps the lid's chatter aliased to 16 kPa. Within 5 %.
-        CHECK(std::abs(metric(runs, "direct_shear", scheme, "normal_stress_mean") - 27e3) < 0.05 * 27e3);
-        CHECK(metric(runs, "direct_shear", scheme, "shear_stress_peak") > 0.0);
-        CHECK(metric(runs, "direct_shear", scheme, "escaped_stones") == 0.0);  // the walls hold every stone
-        const double share = metric(runs, "direct_shear", scheme, "rotation_share");
+        CHECK(std::abs(metric_of(runs, "direct_shear", scheme, "normal_stress_mean") - 27e3) < 0.05 * 27e3);
+        CHECK(metric_of(runs, "direct_shear", scheme, "shear_stress_peak") > 0.0);
+        CHECK(metric_of(runs, "direct_shear", scheme, "escaped_stones") == 0.0);  // the walls hold every stone
+        const double share = metric_of(runs, "direct_shear", scheme, "rotation_share");
         CHECK(share > 0.0);
         CHECK(share < 1.0);
     }
     // Paired differences from the reference scheme, for the other two only.
-    CHECK(std::isfinite(metric(runs, "direct_shear", "direct", "shear_stress_final_diff")));
-    CHECK(std::isfinite(metric(runs, "direct_shear", "munjiza_rk4", "shear_stress_final_diff_ci95")));
-    CHECK(std::isnan(metric(runs, "direct_shear", "zvw_corrected", "shear_stress_final_diff")));
+    CHECK(std::isfinite(metric_of(runs, "direct_shear", "direct", "shear_stress_final_diff")));
+    CHECK(std::isfinite(metric_of(runs, "direct_shear", "munjiza_rk4", "shear_stress_final_diff_ci95")));
+    CHECK(std::isnan(metric_of(runs, "direct_shear", "zvw_corrected", "shear_stress_final_diff")));
     const std::string report = read(dir / "report.md");
     CHECK(report.find("## Granular scenes: schemes against the scatter of an ensemble") != std::string::npos);
     CHECK(report.find("6.90 s, 2.22 %") != std::string::npos);  // seed Table 4 beside

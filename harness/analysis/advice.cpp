@@ -18,9 +18,9 @@ namespace {
 
 const std::string scene_id = "particle_contact";
 
-double relative_error(const RunResult& r) { return r.value("omega_err_max") / r.value("omega_ref_max"); }
+double relative_error(const RunResult& r) { return r.value(metric::omega_err_max) / r.value(metric::omega_ref_max); }
 
-bool stable(const RunResult& r) { return r.failure.empty() && r.value("unstable") == 0.0 && std::isfinite(relative_error(r)); }
+bool stable(const RunResult& r) { return r.failure.empty() && r.value(metric::unstable) == 0.0 && std::isfinite(relative_error(r)); }
 
 struct Outcome {
     bool recommended = false;
@@ -44,7 +44,7 @@ Outcome advise_one(const Scene& scene, const ParamOverrides& params, double t_en
     } else {
         const RunResult search = run_isolated({scene_id, scheme, 0.0, t_end, params, RunKind::stability, false}, {}, limits);
         if (!search.failure.empty()) return {false, o.r, "its stability search failed: " + search.failure};
-        limit = search.value("dt_empirical");
+        limit = search.value(metric::dt_empirical);
     }
     o.r.dt_stability = limit;
     if (!(limit > 0)) return {false, o.r, "no stable dt found"};
@@ -62,11 +62,11 @@ Outcome advise_one(const Scene& scene, const ParamOverrides& params, double t_en
         ladder.push_back(run_at(dt, true));
         const RunResult& r = ladder.back();
         if (stable(r) && relative_error(r) < advice_asymptotic_error) points.push_back({r.spec.dt, relative_error(r)});
-        if (std::isfinite(r.value("ns_per_step"))) ns.push_back(r.value("ns_per_step"));
+        if (std::isfinite(r.value(metric::ns_per_step))) ns.push_back(r.value(metric::ns_per_step));
     };
     for (int k = 0; k < advice_ladder_rungs; ++k) add_rung(dt0 / std::pow(2.0, k));
     // A blow-up is the scheme's instability (it records its fail_step); anything else crashed, hung or threw.
-    if (in_worker && !ladder.front().failure.empty() && !ladder.front().has("fail_step"))
+    if (in_worker && !ladder.front().failure.empty() && !ladder.front().has(metric::fail_step))
         return {false, o.r, "its run failed: " + ladder.front().failure};
     if (!stable(ladder.front()))  // the search's horizon is the criterion's; a run may still fail
         return {false, o.r, fmt::format("unstable at {:.3g} s below its measured limit {:.3g} s", dt0, limit)};

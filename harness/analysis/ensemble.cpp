@@ -30,8 +30,8 @@ GroupKey group_of(const RunSpec& s) { return {s.scene, s.scheme, s.dt, static_ca
 
 // Counts and flags: averaged, no interval.
 bool is_count(const std::string& name) {
-    static const std::set<std::string> counts = {"steps", "force_evals", "timed_steps", "unstable", "fail_step", "fail_time"};
-    return is_timing_metric(name) || counts.count(name) > 0;
+    const MetricInfo* m = find_metric(name);
+    return m && (m->kind == MetricKind::timing || m->kind == MetricKind::count || m->kind == MetricKind::flag || m->kind == MetricKind::failure);
 }
 
 struct Summary {
@@ -147,8 +147,8 @@ std::vector<RunResult> collapse_ensembles(const std::vector<RunResult>& runs) {
                 c.metrics.emplace_back(name + "_diff_ci95", 100.0 * d.half_width / std::abs(base.mean));
             }
         }
-        c.metrics.emplace_back("ensemble_size", static_cast<double>(members.size()));
-        c.metrics.emplace_back("ensemble_failed", failed);
+        c.metrics.emplace_back(metric::ensemble_size, static_cast<double>(members.size()));
+        c.metrics.emplace_back(metric::ensemble_failed, failed);
         if (failed == static_cast<double>(members.size())) c.failure = members.front()->failure;
         for (const RunResult* m : members) c.timing_samples.insert(c.timing_samples.end(), m->timing_samples.begin(), m->timing_samples.end());
         collapse_curves(members, c);

@@ -46,7 +46,7 @@ std::vector<OrderRow> observed_orders(const std::vector<RunResult>& results) {
     }
     std::vector<OrderRow> rows;
     for (const auto& key : pairs)
-        for (const auto& metric : order_metrics) {
+        for (const auto& metric : fitted_metrics()) {
             std::vector<OrderPoint> points;
             for (const RunResult* r : runs[key])
                 if (r->has(metric)) points.push_back({r->spec.dt, r->value(metric)});

@@ -10,10 +10,6 @@
 
 namespace rotbench {
 
-// The error metrics whose convergence is fitted.
-inline const std::vector<std::string> order_metrics = {"omega_err_max", "orientation_err_max", "omega_rms_x",
-                                                       "energy_drift_max", "momentum_drift_max"};
-
 // What the runs of one (scene, scheme, metric) show:
 //   exact           every finite error is within its round-off bound (round_off.hpp);
 //   fit             an order was fitted (order_fit.hpp);

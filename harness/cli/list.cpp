@@ -1,5 +1,6 @@
 // `rotbench list`: the registered schemes and scenes; `--params SCENE`: a scene's keys.
 #include "harness/cli/verb.hpp"
+#include "harness/core/metrics.hpp"
 #include "harness/scenes/scene.hpp"
 #include "schemes/scheme.hpp"
 
@@ -100,14 +101,21 @@ void list_markdown(std::ostream& out) {
     }
 }
 
+// The metric vocabulary: name, unit and kind, one metric a line (tests/same_results.py reads the kinds).
+void list_metrics(std::ostream& out) {
+    for (const auto& m : metric_table()) out << fmt::format("{:<34} {:<9} {}\n", m.name, m.unit.empty() ? "-" : m.unit, kind_name(m.kind));
+}
+
 class ListVerb final : public Verb {
 public:
     void add_options(CLI::App& command) override {
         command.add_option("--params", params_of_, "list the parameters of this scene");
+        command.add_flag("--metrics", metrics_, "the metrics a run can record: name, unit and kind");
         command.add_flag("--markdown", markdown_, "every scheme and scene with its parameters, as Markdown (docs/ids.md)");
     }
     int run(const Invocation& how) override {
-        if (markdown_) list_markdown(how.out);
+        if (metrics_) list_metrics(how.out);
+        else if (markdown_) list_markdown(how.out);
         else if (params_of_.empty()) list(how.out);
         else list_params(params_of_, how.out);
         return 0;
@@ -115,7 +123,7 @@ public:
 
 private:
     std::string params_of_;
-    bool markdown_ = false;
+    bool markdown_ = false, metrics_ = false;
 };
 
 const RegisterVerb<ListVerb> registration("list", "list the registered schemes and scenes");

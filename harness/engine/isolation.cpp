@@ -191,7 +191,7 @@ RunResult run_isolated(const RunSpec& spec, const RunOptions& options, const Iso
     RunResult failed{spec, {}, {}};
     const auto fail = [&](const std::string& why) {
         failed.failure = why;
-        failed.metrics = {{"unstable", 1.0}};
+        failed.metrics = {{metric::unstable, 1.0}};
         return failed;
     };
     const auto scene = scene_of(spec);

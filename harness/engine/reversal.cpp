@@ -58,10 +58,10 @@ RunResult run_reversal(const RunSpec& requested) {
         const double change = (b.omega[i] - initial.omega[i]).norm();
         omega = std::max(omega, scale > 0.0 ? change / scale : change);
     }
-    result.metrics = {{"reversal_angle", angle},
-                      {"reversal_omega", omega},
-                      {"steps", static_cast<double>(steps)},
-                      {"unstable", failed ? 1.0 : 0.0}};
+    result.metrics = {{metric::reversal_angle, angle},
+                      {metric::reversal_omega, omega},
+                      {metric::steps, static_cast<double>(steps)},
+                      {metric::unstable, failed ? 1.0 : 0.0}};
     return result;
 }
 

@@ -96,29 +96,29 @@ public:
     bool unstable() const { return fail_step_ != 0; }
 
     void write(RunResult& r) const {
-        auto add = [&](const char* name, double v) { r.metrics.emplace_back(name, unstable() ? nan : v); };
+        auto add = [&](std::string_view name, double v) { r.metrics.emplace_back(name, unstable() ? nan : v); };
         if (reference_) {
             const Vec3 rms = (squared_error_sum_ / static_cast<double>(std::max<std::int64_t>(samples_, 1))).cwiseSqrt();
-            add("omega_rms_x", rms.x());
-            add("omega_rms_y", rms.y());
-            add("omega_rms_z", rms.z());
-            add("omega_err_max", std::sqrt(omega_err_sq_max_));
-            add("orientation_err_max", orientation_err_max_);
-            add("omega_ref_max", std::sqrt(omega_ref_sq_max_));
+            add(metric::omega_rms_x, rms.x());
+            add(metric::omega_rms_y, rms.y());
+            add(metric::omega_rms_z, rms.z());
+            add(metric::omega_err_max, std::sqrt(omega_err_sq_max_));
+            add(metric::orientation_err_max, orientation_err_max_);
+            add(metric::omega_ref_max, std::sqrt(omega_ref_sq_max_));
         }
         if (tracks_energy_drift_) {
-            add("energy_drift_max", energy_drift_);
-            add("energy_drift_rate", envelope_fit_.slope());
+            add(metric::energy_drift_max, energy_drift_);
+            add(metric::energy_drift_rate, envelope_fit_.slope());
         }
         if (scene_.conserves_angular_momentum())
-            add("momentum_drift_max", tracks_momentum_drift_ ? std::sqrt(momentum_change_sq_max_) / momentum0_.norm() : 0.0);
+            add(metric::momentum_drift_max, tracks_momentum_drift_ ? std::sqrt(momentum_change_sq_max_) / momentum0_.norm() : 0.0);
         // |(|q| - 1)| is largest at the largest or the smallest |q|^2 (both start at 1: no error).
         if (probe_)
             for (const auto& [name, value] : probe_->metrics()) r.metrics.emplace_back(name, unstable() ? nan : value);
-        add("quat_norm_err_max", std::max(std::abs(std::sqrt(quat_norm_sq_max_) - 1.0), std::abs(std::sqrt(quat_norm_sq_min_) - 1.0)));
+        add(metric::quat_norm_err_max, std::max(std::abs(std::sqrt(quat_norm_sq_max_) - 1.0), std::abs(std::sqrt(quat_norm_sq_min_) - 1.0)));
         if (unstable()) {
-            r.metrics.emplace_back("fail_step", static_cast<double>(fail_step_));
-            r.metrics.emplace_back("fail_time", fail_time_);
+            r.metrics.emplace_back(metric::fail_step, static_cast<double>(fail_step_));
+            r.metrics.emplace_back(metric::fail_time, fail_time_);
             r.failure = fmt::format("blew up at step {} (t = {:.6g} s)", fail_step_, fail_time_);
         }
         r.series_columns = series_columns_;
@@ -215,11 +215,11 @@ struct Checkpoint {
 
 }  // namespace
 
-bool RunResult::has(const std::string& name) const {
+bool RunResult::has(std::string_view name) const {
     return std::any_of(metrics.begin(), metrics.end(), [&](const auto& m) { return m.first == name; });
 }
 
-double RunResult::value(const std::string& name) const {
+double RunResult::value(std::string_view name) const {
     for (const auto& [n, v] : metrics)
         if (n == name) return v;
     return nan;
@@ -266,7 +266,7 @@ RunResult run_one(const RunSpec& requested, const RunOptions& options) {
         case RunKind::stability: r = run_stability_search(requested); break;
         case RunKind::trajectory: r = run_trajectory(requested, options); break;
     }
-    if (!r.interrupted) r.metrics.emplace_back("cpu_seconds_run", thread_cpu_seconds() - start);  // all it took
+    if (!r.interrupted) r.metrics.emplace_back(metric::cpu_seconds_run, thread_cpu_seconds() - start);  // all it took
     return r;
 }
 
@@ -321,8 +321,8 @@ RunResult run_trajectory(const RunSpec& requested, const RunOptions& options) {
         timed_steps = done;
         cpu = {loop_seconds, loop_seconds, loop_seconds, 1, {loop_seconds}};
         result.timing_samples = cpu.samples;
-        result.metrics.emplace_back("rotation_share", rotation_seconds / loop_seconds);
-        result.metrics.emplace_back("cpu_seconds_per_simulated_second", loop_seconds / result.spec.t_end);
+        result.metrics.emplace_back(metric::rotation_share, rotation_seconds / loop_seconds);
+        result.metrics.emplace_back(metric::cpu_seconds_per_simulated_second, loop_seconds / result.spec.t_end);
     } else if (!unstable && options.measure_time && requested.timed && !interrupt_signal()) {
         // Timing run: the same loop without the observer, so the reference solution and
         // the metrics are not charged to the scheme.
@@ -347,15 +347,15 @@ RunResult run_trajectory(const RunSpec& requested, const RunOptions& options) {
         result.interrupted = true;
         return result;
     }
-    result.metrics.emplace_back("steps", static_cast<double>(done));
-    result.metrics.emplace_back("force_evals", static_cast<double>(force_evals));
-    result.metrics.emplace_back("cpu_seconds", cpu.median);
-    result.metrics.emplace_back("cpu_seconds_min", cpu.min);
-    result.metrics.emplace_back("cpu_seconds_max", cpu.max);
-    result.metrics.emplace_back("timing_repeats", cpu.repeats);
-    result.metrics.emplace_back("timed_steps", static_cast<double>(timed_steps));
-    result.metrics.emplace_back("ns_per_step", cpu.median / static_cast<double>(steps) * 1e9);
-    result.metrics.emplace_back("unstable", unstable ? 1.0 : 0.0);
+    result.metrics.emplace_back(metric::steps, static_cast<double>(done));
+    result.metrics.emplace_back(metric::force_evals, static_cast<double>(force_evals));
+    result.metrics.emplace_back(metric::cpu_seconds, cpu.median);
+    result.metrics.emplace_back(metric::cpu_seconds_min, cpu.min);
+    result.metrics.emplace_back(metric::cpu_seconds_max, cpu.max);
+    result.metrics.emplace_back(metric::timing_repeats, cpu.repeats);
+    result.metrics.emplace_back(metric::timed_steps, static_cast<double>(timed_steps));
+    result.metrics.emplace_back(metric::ns_per_step, cpu.median / static_cast<double>(steps) * 1e9);
+    result.metrics.emplace_back(metric::unstable, unstable ? 1.0 : 0.0);
     return result;
 }
 

@@ -1,11 +1,13 @@
 // One run: a scheme on a scene at one time step, and its metrics (docs/outputs.md).
 #pragma once
 
+#include "harness/core/metrics.hpp"
 #include "harness/scenes/scene.hpp"
 #include "schemes/scheme.hpp"
 
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -47,11 +49,11 @@ struct RunResult {
     // samples `rotbench compare` tests a cost change against.
     std::vector<double> timing_samples;
 
-    bool has(const std::string& name) const;
+    bool has(std::string_view name) const;
     bool has_energy_series() const { return is_energy_series(series_columns); }
     // An energy series' columns (t, energy_error, ...), not a granular curve's.
     static bool is_energy_series(const std::vector<std::string>& columns) { return columns.size() >= 2 && columns[1] == "energy_error"; }
-    double value(const std::string& name) const;  // NaN when absent
+    double value(std::string_view name) const;  // NaN when absent
 };
 
 // A run of more steps than this is timed on a sample of its own trajectory of this many steps
@@ -69,13 +71,6 @@ std::int64_t step_count(double t_end, double dt);
 // damped one. Energy that a scene's physics feeds in (an applied torque) is never taken
 // for a blow-up. The run stops at that step (fail_step, fail_time); its error metrics are NaN.
 inline constexpr double blowup_energy_factor = 1e6;
-
-// The metrics that time a run (cpu_seconds, cpu_seconds_min, cpu_seconds_max, cpu_seconds_run,
-// cpu_seconds_per_simulated_second, rotation_share, timing_repeats, ns_per_step): the only ones
-// two runs of the same command may disagree on.
-inline bool is_timing_metric(const std::string& name) {
-    return name.rfind("cpu_seconds", 0) == 0 || name == "ns_per_step" || name == "timing_repeats" || name == "rotation_share";
-}
 
 struct RunOptions {
     bool measure_time = true;  // off in tests: the timing run repeats the whole simulation

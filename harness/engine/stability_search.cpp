@@ -18,9 +18,9 @@ RunResult run_stability_search(const RunSpec& requested) {
         result.interrupted = true;
         return result;
     }
-    result.metrics = {{"dt_empirical", limit},
-                      {"dt_peng", probe->predicted_limit()},
-                      {"stability_ratio", limit / probe->predicted_limit()}};
+    result.metrics = {{metric::dt_empirical, limit},
+                      {metric::dt_peng, probe->predicted_limit()},
+                      {metric::stability_ratio, limit / probe->predicted_limit()}};
     return result;
 }
 

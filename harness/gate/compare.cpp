@@ -16,11 +16,6 @@
 namespace rotbench {
 namespace {
 
-// The metrics where larger is worse, and below which a change is round-off (the order fit's floor).
-const std::vector<std::string> error_metrics = {"omega_rms_x",       "omega_rms_y",        "omega_rms_z",      "omega_err_max",
-                                                "orientation_err_max", "energy_drift_max", "momentum_drift_max", "quat_norm_err_max",
-                                                "reversal_angle",    "reversal_omega"};
-
 using Key = std::tuple<std::string, std::string, int, double, double, ParamOverrides>;
 Key key_of(const RunSpec& s) { return {s.scene, s.scheme, static_cast<int>(s.kind), s.dt, s.t_end, s.params}; }
 
@@ -78,8 +73,9 @@ Comparison compare_runs(const std::vector<RunResult>& base, const std::vector<Ru
         acc.measured = 0;
         std::string worst = "no error grew";
         for (const auto& [b, n] : runs)
-            for (const auto& m : error_metrics) {
-                if (!b->has(m) || !n->has(m)) continue;
+            for (const auto& info : metric_table()) {
+                const std::string m(info.name);
+                if (!is_error_metric(m) || !b->has(m) || !n->has(m)) continue;
                 const double before = b->value(m), after = n->value(m);
                 if (!std::isfinite(before) || !(after > order_floor)) continue;  // round-off, or compared as stability
                 const double change = before > 0 ? (after - before) / before : INFINITY;
@@ -96,13 +92,13 @@ Comparison compare_runs(const std::vector<RunResult>& base, const std::vector<Ru
         stab.passed = true;
         stab.message = fmt::format("baseline_stability on {}: no run became unstable", scene);
         for (const auto& [b, n] : runs) {
-            if (b->value("unstable") == 0.0 && n->value("unstable") == 1.0) {
+            if (b->value(metric::unstable) == 0.0 && n->value(metric::unstable) == 1.0) {
                 stab.passed = false;
                 stab.message = fmt::format("baseline_stability on {}: the run at dt = {} is unstable now ({})", scene, g(n->spec.dt),
                                            n->failure);
                 break;
             }
-            const double lb = b->value("dt_empirical"), ln = n->value("dt_empirical");
+            const double lb = b->value(metric::dt_empirical), ln = n->value(metric::dt_empirical);
             if (std::isfinite(lb) && ln < lb * (1.0 - o.error_tolerance)) {
                 stab.passed = false;
                 stab.measured = ln / lb - 1.0;
@@ -140,8 +136,8 @@ Comparison compare_runs(const std::vector<RunResult>& base, const std::vector<Ru
         // Cost: the timing repeats per step, pooled over the runs, tested before they are compared.
         std::vector<double> cost_base, cost_now;
         for (const auto& [b, n] : runs) {
-            for (double s : b->timing_samples) cost_base.push_back(s / b->value("steps"));
-            for (double s : n->timing_samples) cost_now.push_back(s / n->value("steps"));
+            for (double s : b->timing_samples) cost_base.push_back(s / b->value(metric::steps));
+            for (double s : n->timing_samples) cost_now.push_back(s / n->value(metric::steps));
         }
         Verdict cost = verdict("baseline_cost", scene, scheme, where);
         cost.bound = o.cost_tolerance;

@@ -1,5 +1,6 @@
 #include "harness/gate/gate_file.hpp"
 
+#include "harness/core/metrics.hpp"
 #include "harness/io/toml_input.hpp"
 #include "harness/scenes/scene.hpp"
 #include "harness/scenes/stability_probe.hpp"
@@ -17,16 +18,20 @@ const std::vector<std::string> criteria = {"min_order",          "max_error",   
                                            "max_momentum_drift", "min_stability", "max_cost_ratio"};
 
 std::string metric_of(const std::string& criterion, const std::string& metric) {
-    if (criterion == "max_energy_drift") return "energy_drift_max";
-    if (criterion == "max_momentum_drift") return "momentum_drift_max";
-    if (criterion == "min_order" || criterion == "max_error") return metric.empty() ? "omega_err_max" : metric;
+    if (criterion == "max_energy_drift") return metric::energy_drift_max;
+    if (criterion == "max_momentum_drift") return metric::momentum_drift_max;
+    if (criterion == "min_order" || criterion == "max_error") return metric.empty() ? metric::omega_err_max : metric;
     return "";
 }
 
+// The metrics a check may bound: errors against the reference and drifts.
 const std::vector<std::string>& known_metrics() {
-    static const std::vector<std::string> m = {"omega_rms_x",      "omega_rms_y",       "omega_rms_z",
-                                               "omega_err_max",    "orientation_err_max", "energy_drift_max",
-                                               "momentum_drift_max", "quat_norm_err_max"};
+    static const std::vector<std::string> m = [] {
+        std::vector<std::string> out;
+        for (const auto& info : metric_table())
+            if (info.kind == MetricKind::error || info.kind == MetricKind::drift) out.emplace_back(info.name);
+        return out;
+    }();
     return m;
 }
 

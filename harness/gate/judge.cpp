@@ -27,7 +27,7 @@ std::string failed_run(const Runs& runs) {
     return "";
 }
 
-std::vector<OrderPoint> points_of(const Runs& runs, const std::string& metric) {
+std::vector<OrderPoint> points_of(const Runs& runs, std::string_view metric) {
     std::vector<OrderPoint> points;
     for (const RunResult* r : runs) points.push_back({r->spec.dt, r->value(metric)});
     return points;
@@ -50,7 +50,7 @@ void judge_claimed_order(Verdict& v, const Runs& runs) {
         v.message = fmt::format("{} on {}: {}; claimed order {}", v.of.id, v.of.scene, f, p);
         return;
     }
-    const auto points = points_of(runs, "omega_err_max");
+    const auto points = points_of(runs, metric::omega_err_max);
     const OrderFit fit = fit_order(points);
     if (!fit.sufficient) {
         v.message = fmt::format("{} on {}: no order could be fitted (errors {} from dt {} to {}: fewer than 3 points in an "
@@ -80,7 +80,7 @@ void judge_sanity_order(Verdict& v, const Runs& runs) {
         v.message = fmt::format("{} on {}: {}", v.of.id, v.of.scene, f);
         return;
     }
-    const auto points = points_of(runs, "omega_err_max");
+    const auto points = points_of(runs, metric::omega_err_max);
     const OrderFit fit = fit_order(points);
     if (fit.sufficient) {
         v.measured = fit.order, v.lo = fit.order_lo, v.hi = fit.order_hi;
@@ -113,13 +113,13 @@ void judge_exact(Verdict& v, const Runs& runs) {
     }
     Worst w;
     for (const RunResult* r : runs) {
-        w.add(r, r->value("omega_err_max"), round_off_bound(*r, "omega_err_max"));
-        w.add(r, r->value("orientation_err_max"), round_off_bound(*r, "orientation_err_max"));
+        w.add(r, r->value(metric::omega_err_max), round_off_bound(*r, metric::omega_err_max));
+        w.add(r, r->value(metric::orientation_err_max), round_off_bound(*r, metric::orientation_err_max));
     }
     v.measured = w.value, v.bound = w.bound, v.passed = w.ratio <= 1.0;
     v.message = fmt::format("{} on {}: error {} at dt = {} against the round-off bound {} (N = {} steps x 10 eps, times |w_ref| "
                             "for the angular velocity): {}",
-                            v.of.id, v.of.scene, g(w.value), g(w.run->spec.dt), g(w.bound), w.run->value("steps"),
+                            v.of.id, v.of.scene, g(w.value), g(w.run->spec.dt), g(w.bound), w.run->value(metric::steps),
                             v.passed ? "round-off only" : "more than round-off");
 }
 
@@ -130,10 +130,10 @@ void judge_momentum(Verdict& v, const Runs& runs) {
         return;
     }
     Worst w;
-    for (const RunResult* r : runs) w.add(r, r->value("momentum_drift_max"), round_off_bound(*r, "momentum_drift_max"));
+    for (const RunResult* r : runs) w.add(r, r->value(metric::momentum_drift_max), round_off_bound(*r, metric::momentum_drift_max));
     v.measured = w.value, v.bound = w.bound, v.passed = w.ratio <= 1.0;
     v.message = fmt::format("{} on {}: momentum drift {} at dt = {}, bound (4 N + 16) eps = {} for N = {} steps: {}", v.of.id,
-                            v.of.scene, g(w.value), g(w.run->spec.dt), g(w.bound), w.run->value("steps"),
+                            v.of.scene, g(w.value), g(w.run->spec.dt), g(w.bound), w.run->value(metric::steps),
                             v.passed ? "kept to round-off" : "not kept");
 }
 
@@ -143,7 +143,7 @@ void judge_sanity_momentum(Verdict& v, const Runs& runs) {
         v.message = fmt::format("{} on {}: {}", v.of.id, v.of.scene, f);
         return;
     }
-    v.measured = runs.front()->value("momentum_drift_max");
+    v.measured = runs.front()->value(metric::momentum_drift_max);
     v.passed = v.measured <= v.bound;
     v.message = fmt::format("{} on {}: momentum drift {} at dt = {}, required at most 5 % (a scheme that does not let w' "
                             "precess loses far more)",
@@ -158,7 +158,7 @@ void judge_bounded_energy(Verdict& v, const Runs& runs) {
         v.message = fmt::format("{} on {}: {}", v.of.id, v.of.scene, f);
         return;
     }
-    const double short_run = runs[0]->value("energy_drift_max"), long_run = runs[1]->value("energy_drift_max");
+    const double short_run = runs[0]->value(metric::energy_drift_max), long_run = runs[1]->value(metric::energy_drift_max);
     v.measured = short_run > 0.0 ? long_run / short_run : (long_run > 0.0 ? INFINITY : 1.0);
     v.passed = v.measured <= v.bound;
     v.message = fmt::format("{} on {}: the largest energy error grew {:.3g}x from {} s to {} s at dt = {} ({} to {}); bound "
@@ -174,13 +174,13 @@ void judge_reversal(Verdict& v, const Runs& runs) {
         v.message = fmt::format("{} on {}: the reversal run failed: {}", v.of.id, v.of.scene, r.failure);
         return;
     }
-    const double n = r.value("steps");
+    const double n = r.value(metric::steps);
     v.bound = 2.0 * n * 4.0 * eps;
-    v.measured = std::max(r.value("reversal_angle"), r.value("reversal_omega"));
+    v.measured = std::max(r.value(metric::reversal_angle), r.value(metric::reversal_omega));
     v.passed = v.measured <= v.bound;
     v.message = fmt::format("{} on {}: after {} steps forward and {} back with -dt = {}, {} rad and {} (relative) from the start; "
                             "bound 2 N x 4 eps = {}",
-                            v.of.id, v.of.scene, n, n, g(r.spec.dt), g(r.value("reversal_angle")), g(r.value("reversal_omega")),
+                            v.of.id, v.of.scene, n, n, g(r.spec.dt), g(r.value(metric::reversal_angle)), g(r.value(metric::reversal_omega)),
                             g(v.bound));
 }
 
@@ -220,17 +220,17 @@ void judge_check(Verdict& v, const GateCheck& c, const Runs& runs) {
         return;
     }
     if (c.criterion == "min_stability") {
-        v.measured = r.value("stability_ratio");
+        v.measured = r.value(metric::stability_ratio);
         v.passed = v.measured >= c.bound;
-        v.message = fmt::format("{}: measured limit {} s = {} x Peng's prediction {} s, required >= {}", name, g(r.value("dt_empirical")),
-                                g(v.measured), g(r.value("dt_peng")), g(c.bound));
+        v.message = fmt::format("{}: measured limit {} s = {} x Peng's prediction {} s, required >= {}", name, g(r.value(metric::dt_empirical)),
+                                g(v.measured), g(r.value(metric::dt_peng)), g(c.bound));
     } else if (c.criterion == "max_cost_ratio") {
         const RunResult& direct = *runs[1];
-        v.measured = r.value("ns_per_step") / direct.value("ns_per_step");
+        v.measured = r.value(metric::ns_per_step) / direct.value(metric::ns_per_step);
         v.passed = v.measured <= c.bound;
         v.message = std::isnan(v.measured) ? name + ": no timing (a run failed)"
                                            : fmt::format("{}: {} ns per step against {} for direct: ratio {}, required <= {}", name,
-                                                         g(r.value("ns_per_step")), g(direct.value("ns_per_step")), g(v.measured), g(c.bound));
+                                                         g(r.value(metric::ns_per_step)), g(direct.value(metric::ns_per_step)), g(v.measured), g(c.bound));
     } else {
         v.measured = r.value(c.metric);
         if (std::isnan(v.measured)) {
@@ -267,7 +267,7 @@ GateResult judge_gate(const GateFile& file, const GatePlan& plan, std::vector<Ru
         Runs used;
         for (std::size_t i : c.runs) {
             used.push_back(&runs.at(i));
-            const double s = runs[i].value("cpu_seconds_run");
+            const double s = runs[i].value(metric::cpu_seconds_run);
             if (std::isfinite(s)) v.seconds += s;
         }
         if (c.family == "check") judge_check(v, file.checks.at(c.check), used);
