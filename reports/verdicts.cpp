@@ -1,5 +1,6 @@
 #include "reports/verdicts.hpp"
 
+#include "harness/analysis/claims.hpp"
 #include "harness/analysis/median.hpp"
 #include "harness/analysis/round_off.hpp"
 
@@ -18,11 +19,7 @@ std::vector<std::string> schemes_of(const ResultSet& set) {
     return out;
 }
 
-// Scenes with a reference, torque-free (with_torque false) or under a torque T(q) (true).
-bool judged_scene(const SceneInfo& s, bool with_torque) {
-    if (s.reference == Scene::ReferenceKind::none) return false;
-    return with_torque ? s.torque_depends_on_orientation : s.conserves_angular_momentum;
-}
+bool judged_scene(const SceneInfo& s, bool with_torque) { return with_torque ? judged_with_torque(s) : judged_without_torque(s); }
 
 std::string range(double lo, double hi) {
     return std::abs(hi - lo) < 0.005 ? fmt::format("{:.2f}", lo) : fmt::format("{:.2f}–{:.2f}", lo, hi);
@@ -81,49 +78,44 @@ std::vector<const RunResult*> torque_free_runs(const ResultSet& set, const std::
     return out;
 }
 
+// "kept" when the claims module's momentum judge passes on every torque-free run, else the largest drift.
 std::string momentum_cell(const ResultSet& set, const std::string& scheme) {
+    RunRefs runs;
     double worst = 0;
-    bool kept = true, any = false;
-    for (const RunResult* r : torque_free_runs(set, scheme)) {
-        const double v = r->value(metric::momentum_drift_max);
-        if (!std::isfinite(v)) continue;
-        any = true;
-        worst = std::max(worst, v);
-        kept = kept && v <= round_off_bound(*r, metric::momentum_drift_max);
-    }
-    if (!any) return "—";
-    return kept ? "kept" : fmt::format("not kept (≤ {:.1e})", worst);
+    for (const RunResult* r : torque_free_runs(set, scheme))
+        if (std::isfinite(r->value(metric::momentum_drift_max))) runs.push_back(r), worst = std::max(worst, r->value(metric::momentum_drift_max));
+    if (runs.empty()) return "—";
+    return judge_momentum(runs).passed ? "kept" : fmt::format("not kept (≤ {:.1e})", worst);
 }
 
-// Per torque-free scene that conserves energy, its coarsest stable run with a series.
+// Per scene whose energy the claims are judged on: "kept" when every run's energy error is
+// round-off; else the claims module's bounded-energy judge on the scene's horizon run.
 std::string energy_cell(const ResultSet& set, const std::string& scheme) {
     std::map<std::string, std::vector<const RunResult*>> by_scene;
-    for (const RunResult* r : torque_free_runs(set, scheme))
-        if (set.scene(r->spec.scene).conserves_energy && std::isfinite(r->value(metric::energy_drift_max))) by_scene[r->spec.scene].push_back(r);
+    for (const auto& r : set.runs)
+        if (r.spec.scheme == scheme && r.failure.empty() && judges_energy(set.scene(r.spec.scene)) &&
+            std::isfinite(r.value(metric::energy_drift_max)))
+            by_scene[r.spec.scene].push_back(&r);
     if (by_scene.empty()) return "—";
     bool kept = true, drifting = false, judged = false;
-    double worst_rate = 0, worst_bounded = 0;
+    double worst_growth = 0, worst_bounded = 0;
     for (const auto& [scene, runs] : by_scene) {
         const bool scene_kept = std::all_of(runs.begin(), runs.end(), [](const RunResult* r) {
             return r->value(metric::energy_drift_max) <= round_off_bound(*r, metric::energy_drift_max);
         });
         if (scene_kept) continue;
         kept = false;
-        const RunResult* coarse = nullptr;
-        for (const RunResult* r : runs)
-            if (!r->series.empty() && (!coarse || r->spec.dt > coarse->spec.dt)) coarse = r;
-        if (!coarse) continue;
-        judged = true;
-        if (energy_growth(*coarse) >= std::sqrt(2.0)) {
-            drifting = true;
-            worst_rate = std::max(worst_rate, std::abs(coarse->value(metric::energy_drift_rate)));
-        } else {
-            worst_bounded = std::max(worst_bounded, coarse->value(metric::energy_drift_max));
+        for (const auto& h : set.horizons) {
+            if (h.spec.scene != scene || h.spec.scheme != scheme) continue;
+            judged = true;
+            const Judgement j = judge_bounded_energy(h);
+            if (j.passed) worst_bounded = std::max(worst_bounded, h.value(metric::energy_drift_horizon));
+            else drifting = true, worst_growth = std::max(worst_growth, std::isnan(j.measured) ? INFINITY : j.measured);
         }
     }
     if (kept) return "kept";
     if (!judged) return "—";
-    return drifting ? fmt::format("drifting ({:.1e} /s)", worst_rate) : fmt::format("bounded (≤ {:.1e})", worst_bounded);
+    return drifting ? fmt::format("drifting (grew {:.3g}x)", worst_growth) : fmt::format("bounded (≤ {:.1e})", worst_bounded);
 }
 
 std::string stability_cell(const std::vector<StabilityRow>& stability, const std::string& scheme) {
@@ -154,17 +146,6 @@ std::string cost_scene(const ResultSet& set) {
     return set.runs.empty() ? "" : set.runs.front().spec.scene;
 }
 
-double energy_growth(const RunResult& r) {
-    if (!r.has_energy_series() || r.series.size() < 4) return NAN;
-    const double half = 0.5 * r.series.back().at(0);
-    double first = 0, second = 0;
-    for (const auto& row : r.series) {
-        double& largest = row.at(0) <= half ? first : second;
-        largest = std::max(largest, std::abs(row.at(1)));
-    }
-    return first > 0 ? second / first : NAN;
-}
-
 std::string verdict_section(const ResultSet& set, const std::vector<OrderRow>& orders, const std::vector<StabilityRow>& stability) {
     const std::string cost_on = cost_scene(set);
     std::string md = fmt::format(
@@ -172,19 +153,21 @@ std::string verdict_section(const ResultSet& set, const std::vector<OrderRow>& o
         "One row per scheme. *Order*: claimed → observed order of the angular-velocity error, over the torque-free scenes "
         "with a reference (*free*) and those with an orientation-dependent torque (*torque*); a range spans the scenes, "
         "\"exact\" is round-off only, and the other statuses are those of `orders.csv`; after \"no convergence\", "
-        "the relative error at the scheme's finest step (`omega_err_max` over the largest |w_ref|): near 1 where the error "
+        "the relative error at the scheme's finest step (`{3}` over the largest |w_ref|): near 1 where the error "
         "has saturated, far below it where it is round-off that does not converge. *Momentum*: the world angular "
         "momentum on the torque-free scenes, \"kept\" to round-off ((4 N + 16) eps) or the largest relative drift. "
-        "*Energy*: \"kept\" to round-off (10 eps per step), else, on each torque-free scene at its coarsest step, "
-        "\"bounded\" when the largest error over the second half of the run is below sqrt 2 times that over the first "
-        "half, \"drifting\" (with the largest `energy_drift_rate`) when not. *Stability / Peng*: the measured stability "
+        "*Energy*: \"kept\" to round-off (10 eps per step) on every scene of either kind that conserves energy, else "
+        "judged as the gate judges the bounded-energy claim, on each such scene's horizon run (its coarsest step, over the "
+        "scene's duration T and {0:g} T): \"bounded\" (with the largest error over {0:g} T) when the largest energy error "
+        "grows at most sqrt({0:g}) = {1:.2f} times from T to {0:g} T (a drift as t^a grows it {0:g}^a times), \"drifting\" "
+        "(with the largest growth) when not. *Stability / Peng*: the measured stability "
         "limit over Peng et al.'s prediction on the contact pairs, every damping ratio (below 1: Peng's dt is unsafe). "
-        "*ns / step*: **the cost figure of this report**, the median `ns_per_step` of the scheme's runs on `{}` (one "
+        "*ns / step*: **the cost figure of this report**, the median `ns_per_step` of the scheme's runs on `{2}` (one "
         "body; the per-thread CPU time of a run without its metrics over its steps); every CPU time in the report is "
         "this kind of figure, on its own scene.\n\n"
         "| scheme | order, free | order, torque | momentum | energy | stability / Peng | ns / step |\n"
         "|---|---|---|---|---|---|---:|\n",
-        cost_on);
+        energy_horizon, energy_growth_bound, cost_on, metric::omega_err_max);
     for (const auto& scheme : schemes_of(set)) {
         const SchemeInfo* info = set.scheme(scheme);
         std::vector<double> ns;

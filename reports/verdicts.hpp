@@ -14,11 +14,6 @@ namespace rotbench {
 // single-body scene of the runs.
 std::string cost_scene(const ResultSet& set);
 
-// How a run's energy error behaves over time, from its energy series: the largest |E - E0|
-// over the second half of the run against that over the first half. A bounded error gives
-// about 1, a linear drift 2; "bounded" below sqrt 2, "drifting" from it. NaN without a series.
-double energy_growth(const RunResult& r);
-
 // Markdown: the table and how each column is read.
 std::string verdict_section(const ResultSet& set, const std::vector<OrderRow>& orders, const std::vector<StabilityRow>& stability);
 

@@ -130,7 +130,7 @@ TEST_CASE("run --shard K/N and merge give the outputs of the unsharded run, timi
     }
     CHECK_FALSE(fs::exists(dir / "bad"));
     // More shards than runs would leave a slice empty, which merge could not place.
-    const Cli too_many = cli({"run", "--scenes", "asymmetric_free", "--schemes", "zvw", "--dt", "0.1", "--shard", "1/2", "--out",
+    const Cli too_many = cli({"run", "--scenes", "torqued_cylinder", "--schemes", "zvw", "--dt", "0.1", "--shard", "1/2", "--out",
                               (dir / "bad").string()});
     CHECK(too_many.status == 2);
     CHECK_THAT(too_many.err, Catch::Contains("the sweep has only 1 run(s), so at most 1 shard(s)"));

@@ -80,12 +80,13 @@ TEST_CASE("ensembles: --ensemble K runs each seeded scene K times, seeds seed ..
     spec.ensemble = 3;
     spec.params["silo_discharge"] = {{"seed", {7}}};
     const std::vector<RunSpec> plan = plan_sweep(spec);
-    REQUIRE(plan.size() == 4);
+    REQUIRE(plan.size() == 5);  // and cylinder_free's horizon run (its energy is judged)
     for (int k = 0; k < 3; ++k) {
         CHECK(plan[static_cast<std::size_t>(k)].scene == "silo_discharge");
         CHECK(member_seed(plan[static_cast<std::size_t>(k)]) == 7 + k);
     }
     CHECK(plan[3].scene == "cylinder_free");
+    CHECK(plan[4].kind == RunKind::horizon);
     spec.ensemble = 0;
     CHECK_THROWS_AS(plan_sweep(spec), InputError);
 }

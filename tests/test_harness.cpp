@@ -100,25 +100,35 @@ TEST_CASE("Munjiza's scheme keeps the angular momentum of a free body to round-o
 TEST_CASE("a scheme that fails is recorded and the sweep goes on") {
     const auto plan = plan_sweep({{"cylinder_free"}, {"test_nan", "test_throws", "test_explodes", "direct"}, {1e-3}, 0.0});
     std::vector<std::string> seen;
-    const auto results = run_sweep(plan, {.measure_time = false}, [&](std::size_t, const RunResult& r) { seen.push_back(r.spec.scheme); });
-    REQUIRE(results.size() == 4);
+    const auto results = run_sweep(plan, {.measure_time = false}, [&](std::size_t, const RunResult& r) {
+        if (r.spec.kind == RunKind::trajectory) seen.push_back(r.spec.scheme);
+    });
+    REQUIRE(results.size() == 8);  // each scheme's run and its horizon run (cylinder_free's energy is judged)
     CHECK(seen == std::vector<std::string>{"test_nan", "test_throws", "test_explodes", "direct"});
+    const auto of = [&](const std::string& scheme, RunKind kind) -> const RunResult& {
+        for (const auto& r : results)
+            if (r.spec.scheme == scheme && r.spec.kind == kind) return r;
+        FAIL("no " << kind_name(kind) << " run of " << scheme);
+        return results.front();
+    };
 
-    const RunResult& nan_run = results[0];
+    const RunResult& nan_run = of("test_nan", RunKind::trajectory);
     CHECK(nan_run.value("unstable") == 1);
     CHECK(nan_run.value("fail_step") == 1);
     CHECK(std::isnan(nan_run.value("omega_rms_x")));
     CHECK(nan_run.failure.find("blew up at step 1") != std::string::npos);
 
-    CHECK(results[1].value("unstable") == 1);
-    CHECK(results[1].failure == "threw: plug-in bug");
+    CHECK(of("test_throws", RunKind::trajectory).value("unstable") == 1);
+    CHECK(of("test_throws", RunKind::trajectory).failure == "threw: plug-in bug");
+    CHECK_THAT(of("test_throws", RunKind::horizon).failure, Catch::Contains("threw: plug-in bug"));
 
     // |w| doubles per step, E grows 4x: 4^n > 1e6 + 1 first at n = 10.
-    CHECK(results[2].value("unstable") == 1);
-    CHECK(results[2].value("fail_step") == 10);
+    CHECK(of("test_explodes", RunKind::trajectory).value("unstable") == 1);
+    CHECK(of("test_explodes", RunKind::trajectory).value("fail_step") == 10);
 
-    CHECK(results[3].value("unstable") == 0);
-    CHECK(results[3].value("steps") == 500);
+    CHECK(of("direct", RunKind::trajectory).value("unstable") == 0);
+    CHECK(of("direct", RunKind::trajectory).value("steps") == 500);
+    CHECK(of("direct", RunKind::horizon).failure.empty());
 }
 
 TEST_CASE("a damped scene whose energy runs away upwards is stopped there, long before the state overflows") {

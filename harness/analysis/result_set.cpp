@@ -9,30 +9,31 @@ SchemeInfo scheme_info(const std::string& id) {
     return {e.id, e.summary, e.source, e.notes, e.extra};
 }
 
+SceneInfo scene_info(const Scene& scene) {
+    const auto& entry = SceneRegistry::instance().at(scene.params.owner(), "scene");
+    SceneInfo info{entry.id,
+                   entry.summary,
+                   entry.source,
+                   entry.notes,
+                   scene.reference_kind(),
+                   scene.conserves_energy(),
+                   scene.conserves_angular_momentum(),
+                   scene.torque_depends_on_orientation(),
+                   scene.initial_state().size()};
+    info.stability_scene = dynamic_cast<const StabilityProbe*>(&scene) != nullptr;
+    for (const auto& p : scene.params.entries())
+        if (p.key == "zeta" && p.value.size() == 1) info.zeta = p.value.front();
+    return info;
+}
+
 ResultSet describe(std::vector<RunResult> runs) {
     ResultSet set;
-    for (const auto& r : runs) {
-        if (!set.scenes.count(r.spec.scene)) {
-            const auto& entry = SceneRegistry::instance().at(r.spec.scene, "scene");
-            const auto scene = make_scene(r.spec.scene, r.spec.params);
-            set.scenes[r.spec.scene] = {entry.id,
-                                        entry.summary,
-                                        entry.source,
-                                        entry.notes,
-                                        scene->reference_kind(),
-                                        scene->conserves_energy(),
-                                        scene->conserves_angular_momentum(),
-                                        scene->torque_depends_on_orientation(),
-                                        scene->initial_state().size()};
-            auto& info = set.scenes[r.spec.scene];
-            info.stability_scene = dynamic_cast<const StabilityProbe*>(scene.get()) != nullptr;
-            for (const auto& p : scene->params.entries())
-                if (p.key == "zeta" && p.value.size() == 1) info.zeta = p.value.front();
-        }
+    for (auto& r : runs) {
+        if (!set.scenes.count(r.spec.scene)) set.scenes[r.spec.scene] = scene_info(*make_scene(r.spec.scene, r.spec.params));
         if (!set.schemes.count(r.spec.scheme) && SchemeRegistry::instance().contains(r.spec.scheme))
             set.schemes[r.spec.scheme] = scheme_info(r.spec.scheme);
+        (r.spec.kind == RunKind::horizon ? set.horizons : set.runs).push_back(std::move(r));
     }
-    set.runs = std::move(runs);
     return set;
 }
 

@@ -28,7 +28,8 @@ struct SchemeInfo {
 };
 
 struct ResultSet {
-    std::vector<RunResult> runs;
+    std::vector<RunResult> runs;      // every run but the horizon runs
+    std::vector<RunResult> horizons;  // the horizon runs (RunKind::horizon), for the bounded-energy verdicts
     std::map<std::string, SceneInfo> scenes;    // every scene of the runs (with the parameters of its first run)
     std::map<std::string, SchemeInfo> schemes;  // every scheme of the runs that is registered in this process
 
@@ -41,6 +42,7 @@ struct ResultSet {
 
 // The runs with the descriptions of their scenes and schemes (InputError for an unknown scene).
 ResultSet describe(std::vector<RunResult> runs);
+SceneInfo scene_info(const Scene& scene);
 SchemeInfo scheme_info(const std::string& id);  // of a registered scheme
 
 }  // namespace rotbench

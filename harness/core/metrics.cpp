@@ -34,6 +34,8 @@ const std::vector<MetricInfo>& metric_table() {
         {metric::timing_repeats, "", K::timing},
         {metric::timed_steps, "", K::count},
         {metric::rotation_share, "", K::timing},
+        {metric::energy_drift_first, "relative", K::horizon},
+        {metric::energy_drift_horizon, "relative", K::horizon},
         {metric::reversal_angle, "rad", K::reversal},
         {metric::reversal_omega, "relative", K::reversal},
         {metric::dt_empirical, "s", K::stability},
@@ -55,6 +57,7 @@ const char* kind_name(MetricKind kind) {
     case MetricKind::flag: return "flag";
     case MetricKind::failure: return "failure";
     case MetricKind::timing: return "timing";
+    case MetricKind::horizon: return "horizon";
     case MetricKind::reversal: return "reversal";
     case MetricKind::stability: return "stability";
     case MetricKind::ensemble: return "ensemble";
@@ -75,7 +78,8 @@ bool is_timing_metric(std::string_view name) {
 
 bool is_error_metric(std::string_view name) {
     const MetricInfo* m = find_metric(name);
-    return m && (m->kind == MetricKind::error || m->kind == MetricKind::drift || m->kind == MetricKind::reversal);
+    return m && (m->kind == MetricKind::error || m->kind == MetricKind::drift || m->kind == MetricKind::horizon ||
+                 m->kind == MetricKind::reversal);
 }
 
 const std::vector<std::string>& fitted_metrics() {

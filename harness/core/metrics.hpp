@@ -35,6 +35,8 @@ ROTBENCH_METRIC(timing_repeats)
 ROTBENCH_METRIC(timed_steps)
 ROTBENCH_METRIC(ns_per_step)
 ROTBENCH_METRIC(rotation_share)
+ROTBENCH_METRIC(energy_drift_first)
+ROTBENCH_METRIC(energy_drift_horizon)
 ROTBENCH_METRIC(reversal_angle)
 ROTBENCH_METRIC(reversal_omega)
 ROTBENCH_METRIC(dt_empirical)
@@ -55,6 +57,7 @@ enum class MetricKind {
     flag,       // 0 or 1
     failure,    // where an unstable run stopped
     timing,     // CPU time: the only figures two runs of one command may disagree on
+    horizon,    // a horizon run's energy error over the scene's duration and over 8 times it; larger is worse
     reversal,   // how far a forward-then-back run returns from its start; larger is worse
     stability,  // a stability search's limits
     ensemble,   // an ensemble's size and losses

@@ -46,7 +46,7 @@ std::string spec_text(const RunSpec& spec, const Scene& scene) {
 double default_timeout(const RunSpec& spec, const Scene& scene) {
     if (spec.kind == RunKind::stability) return 600.0;
     const double body_steps = static_cast<double>(step_count(scene.t_end(), spec.dt)) * static_cast<double>(scene.initial_state().size());
-    const double ways = spec.kind == RunKind::reversal ? 2.0 : 1.0;
+    const double ways = spec.kind == RunKind::reversal ? 2.0 : spec.kind == RunKind::horizon ? 1.0 + energy_horizon : 1.0;
     return 60.0 + 10.0 * 1e-5 * body_steps * ways;
 }
 

@@ -248,14 +248,15 @@ const char* kind_name(RunKind kind) {
         case RunKind::trajectory: return "trajectory";
         case RunKind::reversal: return "reversal";
         case RunKind::stability: return "stability";
+        case RunKind::horizon: return "horizon";
     }
     return "?";
 }
 
 RunKind kind_from_name(const std::string& name) {
-    for (RunKind k : {RunKind::trajectory, RunKind::reversal, RunKind::stability})
+    for (RunKind k : {RunKind::trajectory, RunKind::reversal, RunKind::stability, RunKind::horizon})
         if (name == kind_name(k)) return k;
-    throw InputError("unknown run kind '" + name + "'; valid kinds: trajectory, reversal, stability");
+    throw InputError("unknown run kind '" + name + "'; valid kinds: trajectory, reversal, stability, horizon");
 }
 
 RunResult run_one(const RunSpec& requested, const RunOptions& options) {
@@ -265,6 +266,7 @@ RunResult run_one(const RunSpec& requested, const RunOptions& options) {
         case RunKind::reversal: r = run_reversal(requested); break;
         case RunKind::stability: r = run_stability_search(requested); break;
         case RunKind::trajectory: r = run_trajectory(requested, options); break;
+        case RunKind::horizon: r = run_horizon(requested); break;
     }
     if (!r.interrupted) r.metrics.emplace_back(metric::cpu_seconds_run, thread_cpu_seconds() - start);  // all it took
     return r;

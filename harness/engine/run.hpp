@@ -17,8 +17,11 @@ namespace rotbench {
 //   trajectory  the scheme steps the scene from t = 0 to t_end: errors, drifts, cost;
 //   reversal    it steps forward to t_end and then back with -dt: how far from the
 //               initial state it returns (time reversibility);
-//   stability   the largest dt at which it stays stable on a stability scene (dt unused).
-enum class RunKind { trajectory, reversal, stability };
+//   stability   the largest dt at which it stays stable on a stability scene (dt unused);
+//   horizon     it steps the scene over its duration T and over energy_horizon x T: how far
+//               its energy error grows (bounded energy).
+enum class RunKind { trajectory, reversal, stability, horizon };
+inline constexpr double energy_horizon = 8.0;
 const char* kind_name(RunKind kind);
 RunKind kind_from_name(const std::string& name);  // InputError for an unknown one
 

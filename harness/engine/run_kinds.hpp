@@ -14,6 +14,10 @@ RunResult run_trajectory(const RunSpec& spec, const RunOptions& options);
 // steps (each way), unstable.
 RunResult run_reversal(const RunSpec& spec);
 
+// Bounded energy: the largest energy error over the scene's duration T (energy_drift_first)
+// and over energy_horizon x T (energy_drift_horizon), at dt; spec.t_end is T.
+RunResult run_horizon(const RunSpec& spec);
+
 // The largest stable dt of the scheme on a stability scene, by bracketing and bisection
 // (harness/analysis/stability.hpp). Metrics: dt_empirical, dt_peng, stability_ratio.
 RunResult run_stability_search(const RunSpec& spec);

@@ -1,5 +1,6 @@
 #include "harness/engine/sweep.hpp"
 
+#include "harness/analysis/claims.hpp"
 #include "harness/analysis/ensemble.hpp"
 #include "harness/engine/interrupt.hpp"
 #include "harness/engine/isolation.hpp"
@@ -64,11 +65,14 @@ std::vector<RunSpec> plan_sweep(const SweepSpec& spec) {
         const auto& keys = scene->params.entries();
         const bool seeded = std::any_of(keys.begin(), keys.end(), [](const auto& e) { return e.key == "seed"; });
         const int members = seeded ? spec.ensemble : 1;
-        for (const auto& scheme_id : scheme_ids)
+        const bool horizon = judges_energy(scene_info(*scene));
+        for (const auto& scheme_id : scheme_ids) {
             for (double dt : dts)
                 for (int k = 0; k < members; ++k)
                     plan.push_back({scene_id, scheme_id, dt, t_end,
                                     members > 1 ? ensemble_member(overrides, scene->params.number("seed"), k) : overrides});
+            if (horizon) plan.push_back(horizon_run({scene_id, scheme_id, *std::max_element(dts.begin(), dts.end()), t_end, overrides}));
+        }
     }
     return plan;
 }

@@ -20,8 +20,10 @@ struct SweepSpec {
     std::map<std::string, ParamOverrides> params;  // scene id -> overrides (--set, config)
 };
 
-// The runs of a sweep in a fixed order (scene, scheme, dt as given, then ensemble member). Checks
-// every input first, so a bad one is reported before anything runs (InputError).
+// The runs of a sweep in a fixed order (scene, scheme, dt as given, then ensemble member; then,
+// on a scene where bounded energy is judged, the scheme's horizon run at the coarsest dt,
+// harness/analysis/claims.hpp). Checks every input first, so a bad one is reported before
+// anything runs (InputError).
 std::vector<RunSpec> plan_sweep(const SweepSpec& spec);
 
 // Runs the plan on `jobs` threads; a failing run is recorded and the sweep goes on. The

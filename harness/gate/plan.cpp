@@ -79,13 +79,8 @@ public:
             }
             for (const auto& scene : section.torque_scenes) {
                 if (c.with_torque.order > 0) claim("order_with_torque", scene, ladder(scene, scheme, dts(scene)), c.with_torque.order);
-                if (c.bounded_energy) {
-                    // The coarsest step of the ladder, over the scene's duration and eight times it.
-                    const double dt = dts(scene).front(), t_end = make_scene(scene)->t_end();
-                    claim("bounded_energy", scene,
-                          {run({scene, scheme, dt, t_end, {}, RunKind::trajectory, false}),
-                           run({scene, scheme, dt, 8.0 * t_end, {}, RunKind::trajectory, false})});
-                }
+                if (c.bounded_energy)  // the coarsest step of the ladder
+                    claim("bounded_energy", scene, {run({scene, scheme, dts(scene).front(), 0.0, {}, RunKind::horizon, false})});
                 if (c.time_reversible) claim("time_reversible", scene, {reversal(scene, scheme)});
             }
         }

@@ -1,0 +1,203 @@
+#include "harness/analysis/claims.hpp"
+
+#include "harness/analysis/order_fit.hpp"
+#include "harness/analysis/round_off.hpp"
+
+#include <algorithm>
+#include <fmt/format.h>
+
+namespace rotbench {
+namespace {
+
+std::string g(double v) { return fmt::format("{:.3g}", v); }
+
+// The first failed run, as a judgement's message; empty when none failed.
+std::string failed_run(const RunRefs& runs) {
+    for (const RunResult* r : runs)
+        if (!r->failure.empty()) return fmt::format("the run at dt = {} failed: {}", g(r->spec.dt), r->failure);
+    return "";
+}
+
+std::vector<OrderPoint> points_of(const RunRefs& runs) {
+    std::vector<OrderPoint> points;
+    for (const RunResult* r : runs) points.push_back({r->spec.dt, r->value(metric::omega_err_max)});
+    return points;
+}
+
+std::string errors_text(const std::vector<OrderPoint>& points) {
+    std::string errors;
+    for (const auto& p : points) errors += (errors.empty() ? "" : ", ") + g(p.error);
+    return errors;
+}
+
+// The metrics of every run against their round-off bounds (round_off.hpp): the judgement's
+// figure is the value with the largest ratio to its bound (NaN is the worst), `run` its run.
+struct RoundOffJudgement {
+    Judgement j;
+    const RunResult* run = nullptr;
+};
+RoundOffJudgement within_round_off(const RunRefs& runs, std::initializer_list<const char*> metrics) {
+    RoundOffJudgement out;
+    if (const auto f = failed_run(runs); !f.empty()) {
+        out.j.message = f;
+        return out;
+    }
+    double worst = 0;
+    for (const RunResult* r : runs)
+        for (const char* m : metrics) {
+            const double value = r->value(m), bound = round_off_bound(*r, m), ratio = value / bound;
+            if (!out.run || !(ratio <= worst)) worst = ratio, out.j.measured = value, out.j.bound = bound, out.run = r;
+        }
+    out.j.passed = out.run && worst <= 1.0;
+    if (!out.run) out.j.message = "no run to judge";
+    return out;
+}
+
+Judgement bounded_energy(double early, double late, const std::string& where) {
+    Judgement j;
+    j.bound = energy_growth_bound;
+    j.measured = early > 0.0 ? late / early : (late > 0.0 ? INFINITY : 1.0);
+    j.passed = j.measured <= j.bound;
+    j.message = fmt::format("the largest energy error grew {:.3g}x {} ({} to {}); bound sqrt({:g}) = {:.2f} (a linear drift grows "
+                            "it {:g}x, a bounded error about 1x)",
+                            j.measured, where, g(early), g(late), energy_horizon, j.bound, energy_horizon);
+    return j;
+}
+
+}  // namespace
+
+bool judged_without_torque(const SceneInfo& scene) {
+    return scene.reference != Scene::ReferenceKind::none && scene.conserves_angular_momentum;
+}
+
+bool judged_with_torque(const SceneInfo& scene) {
+    return scene.reference != Scene::ReferenceKind::none && scene.torque_depends_on_orientation;
+}
+
+bool judges_energy(const SceneInfo& scene) {
+    return scene.conserves_energy && (judged_without_torque(scene) || judged_with_torque(scene));
+}
+
+RunSpec horizon_run(const RunSpec& coarsest) {
+    RunSpec spec = coarsest;
+    spec.kind = RunKind::horizon;
+    spec.timed = false;
+    return spec;
+}
+
+// The 95 % interval, widened by how far the local orders over the fitted range stray from the
+// order, must reach p: the t-interval only measures the scatter about a straight line, and the
+// next term of the error expansion bends the line by about that spread.
+Judgement judge_order(const RunRefs& ladder, int claimed) {
+    Judgement j;
+    j.bound = claimed;
+    if (const auto f = failed_run(ladder); !f.empty()) {
+        j.message = fmt::format("{}; claimed order {}", f, claimed);
+        return j;
+    }
+    const auto points = points_of(ladder);
+    const OrderFit fit = fit_order(points);
+    if (!fit.sufficient) {
+        j.message = fmt::format("no order could be fitted (errors {} from dt {} to {}: fewer than 3 points in an asymptotic range); "
+                                "claimed order {}",
+                                errors_text(points), g(points.front().dt), g(points.back().dt), claimed);
+        return j;
+    }
+    double spread = 0;
+    for (const auto& l : fit.local_orders)
+        if (l.dt_fine >= fit.dt_min && l.dt_coarse <= fit.dt_max) spread = std::max(spread, std::abs(l.order - fit.order));
+    j.measured = fit.order, j.lo = fit.order_lo, j.hi = fit.order_hi;
+    const bool close = std::abs(fit.order - claimed) <= order_tolerance;
+    const bool reaches = fit.order_lo - spread <= claimed && claimed <= fit.order_hi + spread;
+    j.passed = close && reaches;
+    j.message = fmt::format("observed order {:.2f} [{:.2f}, {:.2f}] of {} over dt {} ... {} ({} points), claimed {}: {}", fit.order,
+                            fit.order_lo, fit.order_hi, metric::omega_err_max, g(fit.dt_max), g(fit.dt_min), fit.points, claimed,
+                            j.passed ? fmt::format("within {}, and the interval reaches it", order_tolerance)
+                            : !close ? fmt::format("more than {} away", order_tolerance)
+                                     : fmt::format("the interval, widened by the local orders' spread {:.2f}, does not reach it", spread));
+    return j;
+}
+
+Judgement judge_sanity_order(const RunRefs& ladder) {
+    Judgement j;
+    j.bound = sanity_min_order;
+    if (const auto f = failed_run(ladder); !f.empty()) {
+        j.message = f;
+        return j;
+    }
+    const auto points = points_of(ladder);
+    const OrderFit fit = fit_order(points);
+    if (fit.sufficient) {
+        j.measured = fit.order, j.lo = fit.order_lo, j.hi = fit.order_hi;
+        j.passed = fit.order >= sanity_min_order;
+        j.message = fmt::format("observed order {:.2f} [{:.2f}, {:.2f}] over dt {} ... {}, required at least {} (a consistent scheme "
+                                "converges)",
+                                fit.order, fit.order_lo, fit.order_hi, g(fit.dt_max), g(fit.dt_min), sanity_min_order);
+        return j;
+    }
+    j.message = fmt::format("{} does not fall as a power of dt (errors {} from dt {} to {}), required an order of at least {}",
+                            metric::omega_err_max, errors_text(points), g(points.front().dt), g(points.back().dt), sanity_min_order);
+    return j;
+}
+
+Judgement judge_exact(const RunRefs& runs) {
+    auto [j, run] = within_round_off(runs, {metric::omega_err_max, metric::orientation_err_max});
+    if (run)
+        j.message = fmt::format("error {} at dt = {} against the round-off bound {} (N = {} steps x 10 eps, times |w_ref| for the "
+                                "angular velocity): {}",
+                                g(j.measured), g(run->spec.dt), g(j.bound), run->value(metric::steps),
+                                j.passed ? "round-off only" : "more than round-off");
+    return j;
+}
+
+Judgement judge_momentum(const RunRefs& runs) {
+    auto [j, run] = within_round_off(runs, {metric::momentum_drift_max});
+    if (run)
+        j.message = fmt::format("momentum drift {} at dt = {}, bound (4 N + 16) eps = {} for N = {} steps: {}", g(j.measured),
+                                g(run->spec.dt), g(j.bound), run->value(metric::steps), j.passed ? "kept to round-off" : "not kept");
+    return j;
+}
+
+Judgement judge_sanity_momentum(const RunResult& run) {
+    Judgement j;
+    j.bound = sanity_max_momentum_drift;
+    if (const auto f = failed_run({&run}); !f.empty()) {
+        j.message = f;
+        return j;
+    }
+    j.measured = run.value(metric::momentum_drift_max);
+    j.passed = j.measured <= j.bound;
+    j.message = fmt::format("momentum drift {} at dt = {}, required at most {:g} % (a scheme that does not let w' precess loses far "
+                            "more)",
+                            g(j.measured), g(run.spec.dt), 100 * sanity_max_momentum_drift);
+    return j;
+}
+
+Judgement judge_bounded_energy(const RunResult& run) {
+    if (!run.failure.empty()) {
+        Judgement j;
+        j.bound = energy_growth_bound;
+        j.message = fmt::format("the run at dt = {} failed: {}", g(run.spec.dt), run.failure);
+        return j;
+    }
+    return bounded_energy(run.value(metric::energy_drift_first), run.value(metric::energy_drift_horizon),
+                          fmt::format("from {} s to {} s at dt = {}", g(run.spec.t_end), g(energy_horizon * run.spec.t_end), g(run.spec.dt)));
+}
+
+Judgement judge_reversal(const RunResult& run) {
+    Judgement j;
+    if (!run.failure.empty()) {
+        j.message = "the reversal run failed: " + run.failure;
+        return j;
+    }
+    const double n = run.value(metric::steps);
+    j.bound = 2.0 * n * 4.0 * unit_round_off;
+    j.measured = std::max(run.value(metric::reversal_angle), run.value(metric::reversal_omega));
+    j.passed = j.measured <= j.bound;
+    j.message = fmt::format("after {} steps forward and {} back with -dt = {}, {} rad and {} (relative) from the start; bound 2 N x 4 "
+                            "eps = {}",
+                            n, n, g(run.spec.dt), g(run.value(metric::reversal_angle)), g(run.value(metric::reversal_omega)), g(j.bound));
+    return j;
+}
+
+}  // namespace rotbench

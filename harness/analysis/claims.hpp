@@ -1,0 +1,65 @@
+// Whether a scheme holds what it claims (SchemeClaims, schemes/scheme.hpp): one judge per
+// claim, with its bound and where the bound comes from. The gate, the report's verdict table
+// and the tests all judge through these functions, so they cannot disagree on a threshold.
+#pragma once
+
+#include "harness/analysis/result_set.hpp"
+#include "harness/engine/run.hpp"
+
+#include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace rotbench {
+
+using RunRefs = std::vector<const RunResult*>;
+
+// What a judge found. `message` states the value (with its interval), the bound, and the
+// bound's origin; a caller prefixes it with the claim and the scene.
+struct Judgement {
+    bool passed = false;
+    double measured = std::numeric_limits<double>::quiet_NaN();
+    double lo = std::numeric_limits<double>::quiet_NaN(), hi = std::numeric_limits<double>::quiet_NaN();  // its interval
+    double bound = std::numeric_limits<double>::quiet_NaN();
+    std::string message;
+};
+
+// The scenes a scheme's claims are judged on: those with a reference, torque-free (the angular
+// momentum conserved) or under an orientation-dependent torque; and of those, the ones whose
+// true motion conserves energy, for bounded energy.
+bool judged_without_torque(const SceneInfo& scene);
+bool judged_with_torque(const SceneInfo& scene);
+bool judges_energy(const SceneInfo& scene);
+
+// The horizon run that judges bounded energy on a scene of a sweep: at the coarsest of its
+// steps, `dts`, over the scene's duration t_end and energy_horizon times it.
+RunSpec horizon_run(const RunSpec& coarsest);
+
+// A claimed order p holds when the observed order lies within this of p (and its interval reaches p).
+inline constexpr double order_tolerance = 0.2;
+// What any consistent scheme must show when it claims nothing.
+inline constexpr double sanity_min_order = 0.8;
+inline constexpr double sanity_max_momentum_drift = 0.05;
+// Bounded energy: a drift growing as t^a multiplies the largest energy error energy_horizon^a
+// times over a run energy_horizon times as long (run.hpp), a bounded error about once; the
+// bound splits the two at a = 1/2.
+inline const double energy_growth_bound = std::sqrt(energy_horizon);
+
+// The order of omega_err_max over a ladder of steps against the claimed order p.
+Judgement judge_order(const RunRefs& ladder, int claimed);
+// At least sanity_min_order over a ladder.
+Judgement judge_sanity_order(const RunRefs& ladder);
+// Every error of every run within its round-off bound (round_off.hpp).
+Judgement judge_exact(const RunRefs& runs);
+// The angular momentum kept to round-off in every run.
+Judgement judge_momentum(const RunRefs& runs);
+// The angular momentum within sanity_max_momentum_drift.
+Judgement judge_sanity_momentum(const RunResult& run);
+// From a horizon run (RunKind::horizon): the largest energy error over energy_horizon x T
+// against that over T.
+Judgement judge_bounded_energy(const RunResult& horizon_run);
+// Back to the start to round-off, after N steps forward and N back.
+Judgement judge_reversal(const RunResult& run);
+
+}  // namespace rotbench
