@@ -25,8 +25,11 @@ ParamOverrides without_seed(const ParamOverrides& params) {
     return out;
 }
 
-using GroupKey = std::tuple<std::string, std::string, double, int, ParamOverrides>;
-GroupKey group_of(const RunSpec& s) { return {s.scene, s.scheme, s.dt, static_cast<int>(s.kind), without_seed(s.params)}; }
+// The members of an ensemble are the runs that differ in their seed only.
+RunSpec group_of(RunSpec s) {
+    s.params = without_seed(s.params);
+    return s;
+}
 
 // Counts and flags: averaged, no interval.
 bool is_count(const std::string& name) {
@@ -97,11 +100,11 @@ ParamOverrides ensemble_member(const ParamOverrides& overrides, double base_seed
 }
 
 std::vector<RunResult> collapse_ensembles(const std::vector<RunResult>& runs) {
-    std::map<GroupKey, std::vector<const RunResult*>> groups;
+    std::map<RunSpec, std::vector<const RunResult*>> groups;
     for (const RunResult& r : runs)
         if (seed_of(r.spec)) groups[group_of(r.spec)].push_back(&r);
     std::vector<RunResult> out;
-    std::set<GroupKey> emitted;
+    std::set<RunSpec> emitted;
     for (const RunResult& r : runs) {
         const auto found = seed_of(r.spec) ? groups.find(group_of(r.spec)) : groups.end();
         if (found == groups.end() || found->second.size() < 2) {
@@ -116,8 +119,8 @@ std::vector<RunResult> collapse_ensembles(const std::vector<RunResult>& runs) {
         // The reference scheme's members by seed, for the paired differences.
         std::map<double, const RunResult*> reference;
         if (r.spec.scheme != ensemble_reference_scheme) {
-            GroupKey key = found->first;
-            std::get<1>(key) = ensemble_reference_scheme;
+            RunSpec key = found->first;
+            key.scheme = ensemble_reference_scheme;
             if (const auto ref = groups.find(key); ref != groups.end())
                 for (const RunResult* m : ref->second) reference[*seed_of(m->spec)] = m;
         }
@@ -164,7 +167,7 @@ std::vector<RunResult> collapse_ensembles(const std::vector<RunResult>& runs) {
 }
 
 std::vector<bool> ensemble_members(const std::vector<RunResult>& runs) {
-    std::map<GroupKey, int> sizes;
+    std::map<RunSpec, int> sizes;
     for (const RunResult& r : runs)
         if (seed_of(r.spec)) ++sizes[group_of(r.spec)];
     std::vector<bool> out;

@@ -33,6 +33,9 @@ struct RunSpec {
     ParamOverrides params;  // scene parameters other than t_end, as given by the user
     RunKind kind = RunKind::trajectory;
     bool timed = true;      // false: no timing repeats (the gate's accuracy runs)
+
+    // A run's identity: two specs that compare equal make the same run.
+    friend auto operator<=>(const RunSpec&, const RunSpec&) = default;
 };
 
 struct RunResult {

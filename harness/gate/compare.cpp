@@ -16,8 +16,11 @@
 namespace rotbench {
 namespace {
 
-using Key = std::tuple<std::string, std::string, int, double, double, ParamOverrides>;
-Key key_of(const RunSpec& s) { return {s.scene, s.scheme, static_cast<int>(s.kind), s.dt, s.t_end, s.params}; }
+// Whether a run was timed does not change what it computes: a timed and an untimed run match.
+RunSpec key_of(RunSpec s) {
+    s.timed = true;
+    return s;
+}
 
 std::string g(double v) { return fmt::format("{:.3g}", v); }
 
@@ -38,12 +41,12 @@ double MetricChange::change() const { return base == now ? 0.0 : (now - base) / 
 Comparison compare_runs(const std::vector<RunResult>& base, const std::vector<RunResult>& now, const CompareOptions& o,
                         const std::string& where) {
     Comparison c;
-    std::map<Key, const RunResult*> by_key;
+    std::map<RunSpec, const RunResult*> by_key;
     for (const auto& r : base) by_key[key_of(r.spec)] = &r;
     // Per scene and scheme, in the order of the new runs.
     std::vector<std::pair<std::string, std::string>> pairs;
     std::map<std::pair<std::string, std::string>, std::vector<std::pair<const RunResult*, const RunResult*>>> matched;
-    std::map<Key, bool> seen;
+    std::map<RunSpec, bool> seen;
     for (const auto& r : now) {
         const auto it = by_key.find(key_of(r.spec));
         if (it == by_key.end()) {

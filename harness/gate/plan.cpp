@@ -18,9 +18,7 @@ public:
     explicit Planner(const GateFile& file) : file_(file) {}
 
     std::size_t run(RunSpec spec) {
-        const auto key = std::make_tuple(spec.scene, spec.scheme, static_cast<int>(spec.kind), spec.dt, spec.t_end, spec.params,
-                                         spec.timed);
-        const auto [it, fresh] = index_.try_emplace(key, plan_.runs.size());
+        const auto [it, fresh] = index_.try_emplace(spec, plan_.runs.size());
         if (fresh) plan_.runs.push_back(std::move(spec));
         return it->second;
     }
@@ -126,7 +124,7 @@ private:
 
     const GateFile& file_;
     GatePlan plan_;
-    std::map<std::tuple<std::string, std::string, int, double, double, ParamOverrides, bool>, std::size_t> index_;
+    std::map<RunSpec, std::size_t> index_;
 };
 
 }  // namespace
