@@ -1,3 +1,4 @@
+#include "harness/core/fnv1a.hpp"
 #include "harness/io/plugin.hpp"
 
 #include "schemes/plugin_abi.hpp"
@@ -18,12 +19,6 @@ namespace {
 std::vector<LoadedPlugin>& plugins() {
     static std::vector<LoadedPlugin> list;
     return list;
-}
-
-std::string hash_of(const std::string& bytes) {
-    std::uint64_t h = 14695981039346656037ull;  // FNV-1a, 64 bit
-    for (unsigned char c : bytes) h = (h ^ c) * 1099511628211ull;
-    return fmt::format("{:016x}", h);
 }
 
 bool is_id(const std::string& s) {
@@ -47,7 +42,7 @@ std::vector<std::string> load_plugin(const std::string& path) {
     const auto bytes = read_file(path);
     if (!bytes) throw InputError(where + ": cannot read the file");
     // The same file again (a long-lived process, or the option given twice): already loaded.
-    const std::string absolute = std::filesystem::absolute(path).string(), hash = hash_of(*bytes);
+    const std::string absolute = std::filesystem::absolute(path).string(), hash = Fnv1a().feed(*bytes).hex();
     for (const auto& p : plugins())
         if (p.path == absolute && p.hash == hash) return p.schemes;
     // A path without '/' would make dlopen search the library path instead of this file.

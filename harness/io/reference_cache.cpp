@@ -1,3 +1,4 @@
+#include "harness/core/fnv1a.hpp"
 #include "harness/io/reference_cache.hpp"
 
 #include "harness/io/output_files.hpp"
@@ -32,15 +33,9 @@ std::filesystem::path directory() {
     return "";
 }
 
-std::uint64_t fnv1a(std::string_view text) {
-    std::uint64_t h = 14695981039346656037ull;
-    for (unsigned char c : text) h = (h ^ c) * 1099511628211ull;
-    return h;
-}
-
 std::filesystem::path file_for(const std::string& scene_id, const std::string& key) {
     const auto dir = directory();
-    return dir.empty() ? dir : dir / fmt::format("{}-{:016x}.traj", scene_id, fnv1a(key));
+    return dir.empty() ? dir : dir / fmt::format("{}-{:016x}.traj", scene_id, Fnv1a().feed(key).value());
 }
 
 }  // namespace
@@ -63,7 +58,7 @@ std::string encode_trajectory(const std::string& key, const Trajectory& trajecto
     put(&bodies, sizeof bodies);
     put(&count, sizeof count);
     if (count > 0) put(trajectory.values.data(), count * sizeof(double));
-    const std::uint64_t sum = fnv1a(bytes);
+    const std::uint64_t sum = Fnv1a().feed(bytes).value();
     put(&sum, sizeof sum);
     return bytes;
 }
@@ -91,7 +86,7 @@ std::optional<Trajectory> decode_trajectory(const std::string& bytes, const std:
     t.values.resize(count);
     take(t.values.data(), count * sizeof(double));
     take(&sum, sizeof sum);
-    if (sum != fnv1a(std::string_view(bytes).substr(0, at - sizeof sum))) return std::nullopt;  // a flipped bit anywhere
+    if (sum != Fnv1a().feed(std::string_view(bytes).substr(0, at - sizeof sum)).value()) return std::nullopt;  // a flipped bit anywhere
     return t;
 }
 

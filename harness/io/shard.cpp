@@ -1,3 +1,4 @@
+#include "harness/core/fnv1a.hpp"
 #include "harness/io/shard.hpp"
 
 #include "harness/io/csv.hpp"
@@ -35,13 +36,8 @@ std::vector<std::size_t> shard_indices(std::size_t plan_size, const Shard& shard
 }
 
 std::string plan_id(const std::vector<RunSpec>& plan) {
-    std::uint64_t h = 14695981039346656037ull;  // FNV-1a, 64 bit
-    const auto feed = [&](const std::string& s) {
-        for (unsigned char c : s) {
-            h ^= c;
-            h *= 1099511628211ull;
-        }
-    };
+    Fnv1a h;
+    const auto feed = [&](const std::string& s) { h.feed(s); };
     for (const auto& r : plan) {
         feed(fmt::format("{}|{}|{}|{}|{:a}|{:a}|", r.scene, r.scheme, kind_name(r.kind), r.timed ? "timed" : "untimed", r.dt,
                          r.t_end));
@@ -51,7 +47,7 @@ std::string plan_id(const std::vector<RunSpec>& plan) {
         }
         feed("\n");
     }
-    return fmt::format("{:016x}", h);
+    return h.hex();
 }
 
 std::string shard_csv(const std::string& plan_id, int shard, int shards, const std::vector<RunResult>& results,
