@@ -7,6 +7,7 @@
 #include "harness/engine/parallel.hpp"
 #include "harness/gate/compare.hpp"
 #include "harness/gate/gate.hpp"
+#include "harness/io/journal.hpp"
 #include "harness/io/output_dir.hpp"
 #include "harness/io/parse.hpp"
 #include "harness/io/output_files.hpp"
@@ -92,7 +93,7 @@ public:
             if (outcome.exit_status) return outcome.exit_status;
             if (slice.shard) {
                 write_slice(*dir, slice, outcome.results, how.out);
-                discard_journal(*dir);
+                Journal::discard(dir->path());
                 return 0;
             }
             runs = outcome.results;
@@ -119,7 +120,7 @@ public:
             dir->write("summary.json", json);
             dir->write("results.csv", results_csv(result.runs));
             dir->write("runs.csv", runs_csv(result.runs));
-            discard_journal(*dir);
+            Journal::discard(dir->path());
         }
         return result.passed() ? 0 : 1;
     }

@@ -106,7 +106,7 @@ int run_sweep_command(const RunOptionsText& o, const Invocation& how) {
     if (outcome.exit_status) return outcome.exit_status;
     if (!slice.shard) write_outputs(dir, outcome.results, how.command_line, report, how.out);
     else write_slice(dir, slice, outcome.results, how.out);  // no orders or report: they need every run
-    discard_journal(dir);
+    Journal::discard(dir.path());
     return 0;
 }
 

@@ -138,10 +138,5 @@ void write_slice(const OutputDir& dir, const PlanSlice& slice, const std::vector
                        slice.shard->count, results.size(), slice.plan_size, dir.path().string());
 }
 
-void discard_journal(const OutputDir& dir) {
-    std::error_code ec;
-    for (const char* f : {"plan", "runs", "command", "cwd", "plugins"}) fs::remove(dir.path() / "partial" / f, ec);
-    fs::remove(dir.path() / "partial", ec);  // when empty
-}
 
 }  // namespace rotbench

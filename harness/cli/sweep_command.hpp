@@ -52,7 +52,5 @@ SweepOutcome sweep_plan(const PlanSlice& slice, const OutputDir* dir, const Invo
 inline const std::vector<std::string> slice_files = {"results.csv", "runs.csv", "shard.csv"};
 void write_slice(const OutputDir& dir, const PlanSlice& slice, const std::vector<RunResult>& results, std::ostream& out);
 
-// Removes the journal of `dir`, once the outputs it served are written.
-void discard_journal(const OutputDir& dir);
 
 }  // namespace rotbench

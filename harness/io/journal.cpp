@@ -133,10 +133,10 @@ void Journal::record(std::size_t plan_index, const RunResult& result) const {
     ::close(fd);
 }
 
-void Journal::discard() const {
+void Journal::discard(const fs::path& out_dir) {
     std::error_code ec;
-    for (const char* f : {"plan", "runs", "command", "cwd", "plugins"}) fs::remove(journal_dir(out_.path()) / f, ec);
-    fs::remove(journal_dir(out_.path()), ec);  // when empty
+    for (const char* f : {"plan", "runs", "command", "cwd", "plugins"}) fs::remove(journal_dir(out_dir) / f, ec);
+    fs::remove(journal_dir(out_dir), ec);  // when empty
 }
 
 }  // namespace rotbench

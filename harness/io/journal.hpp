@@ -47,8 +47,8 @@ public:
     std::map<std::size_t, RunResult> finished() const;
     // Writes one finished run (OutputError when it cannot). Safe to call from several threads.
     void record(std::size_t plan_index, const RunResult& result) const;
-    // Its files, once the outputs it served are written.
-    void discard() const;
+    // The journal's files in out_dir, once the outputs it served are written.
+    static void discard(const std::filesystem::path& out_dir);
 
 private:
     Journal(OutputDir out, std::vector<RunSpec> plan) : out_(std::move(out)), plan_(std::move(plan)) {}

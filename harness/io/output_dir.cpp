@@ -157,16 +157,6 @@ void OutputDir::record(const std::string& relative) const {
     write_manifest(state_->dir, state_->manifest);
 }
 
-bool OutputDir::writable(const std::string& relative) const {
-    std::lock_guard lock(state_->mutex);
-    try {
-        check(relative);
-        return true;
-    } catch (const InputError&) {
-        return false;
-    }
-}
-
 void OutputDir::write(const std::string& relative, const std::string& content) const {
     const fs::path file = claim(relative);
     write_file_atomically(file, content);

@@ -42,8 +42,6 @@ public:
     // For a file another program writes (gnuplot) or one appended to (the journal): checks
     // the name as write() does and lists it; returns the full path.
     std::filesystem::path claim(const std::string& relative) const;
-    // Whether `relative` may be written: free, or the family's own.
-    bool writable(const std::string& relative) const;
 
 private:
     struct State {

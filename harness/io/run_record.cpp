@@ -25,8 +25,6 @@ namespace {
 constexpr int parts = 5;
 
 // "run I R N S P W": seven words, the index and the parts' lengths; false for anything else.
-// The record of an older build, "run I R N S" (before the snapshots) or "run I R N S P"
-// (before the walls), reads as one without them: a journal it left is resumed, not redone.
 bool parse_header(const std::string& line, std::size_t& index, std::size_t (&lengths)[parts]) {
     std::size_t values[parts + 1] = {};
     if (line.compare(0, 4, "run ") != 0) return false;
@@ -40,7 +38,7 @@ bool parse_header(const std::string& line, std::size_t& index, std::size_t (&len
         if (line[at] != ' ') return false;
         ++at;
     }
-    if (at != line.size() || count < 3) return false;  // 4 to 6 numbers, the last one ending the line
+    if (at != line.size() || count != parts) return false;  // 6 numbers, the last one ending the line
     index = values[0];
     for (int k = 0; k < parts; ++k) lengths[k] = values[k + 1];
     return true;

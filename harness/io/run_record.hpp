@@ -1,9 +1,7 @@
 // One finished run as a self-delimiting record: the form in which the journal keeps runs and
 // an isolated worker hands its run back.
 //   "run INDEX R N S P W\n", R bytes of its results.csv, N of its runs.csv, S of its series
-//   (0: none), P of its snapshots (0: none), W of its walls (0: none), "end INDEX\n"; an older
-//   build's "run INDEX R N S P" reads as a record without walls, and "run INDEX R N S" as one
-//   without snapshots either
+//   (0: none), P of its snapshots (0: none), W of its walls (0: none), "end INDEX\n".
 // A record cut short (a kill while it was written) is not a record.
 #pragma once
 

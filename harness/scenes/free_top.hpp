@@ -31,7 +31,6 @@ protected:
         omega0_body_ = omega0_body;
         exact_.emplace(inertia, q0, omega0_body);
     }
-    const FreeRigidBody& exact_motion() const { return *exact_; }
 
 private:
     Vec3 inertia_, omega0_body_;

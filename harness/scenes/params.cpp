@@ -46,12 +46,6 @@ Quat Params::quat(const std::string& key) const {
     return q.normalized();
 }
 
-bool Params::all_default() const {
-    for (const auto& e : entries_)
-        if (e.value != e.default_value) return false;
-    return true;
-}
-
 std::string Params::canonical() const {
     std::string out = scene_id_ + ":";
     for (const auto& e : entries_) {

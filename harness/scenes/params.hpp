@@ -35,7 +35,6 @@ public:
     Vec3 vec3(const std::string& key) const;
     Quat quat(const std::string& key) const;  // w, x, y, z; must be nonzero, returned normalised
     const std::vector<Entry>& entries() const { return entries_; }
-    bool all_default() const;
     // Every key and value, for cache keys and provenance.
     std::string canonical() const;
 
