@@ -250,3 +250,22 @@ TEST_CASE("reference trajectories are cached on disk, keyed by their inputs and 
     ::unsetenv("ROTBENCH_CACHE");
     std::filesystem::remove_all(dir);
 }
+
+TEST_CASE("every scene's registry entry states its traits, the same as the scene built from it") {
+    for (const auto& id : SceneRegistry::instance().ids()) {
+        INFO(id);
+        const SceneTraits& declared = SceneRegistry::instance().at(id, "scene").extra;
+        const auto scene = make_scene(id);
+        CHECK(scene->reference_kind() == declared.reference);
+        CHECK(scene->conserves_angular_momentum() == declared.conserves_angular_momentum);
+        CHECK(scene->torque_depends_on_orientation() == declared.torque_depends_on_orientation);
+        CHECK(scene->times_in_run() == declared.times_in_run);
+        CHECK((dynamic_cast<const StabilityProbe*>(scene.get()) != nullptr) == declared.stability);
+        // A scene that declares a closed form has one.
+        if (declared.reference == ReferenceKind::closed_form) CHECK_NOTHROW(scene->exact(0, 0.0));
+    }
+    // What planning and the stability study read without building anything.
+    CHECK_FALSE(SceneRegistry::instance().at("silo_discharge", "scene").extra.in_default_suite);
+    CHECK(SceneRegistry::instance().at("sphere_pair", "scene").extra.stability);
+    CHECK(SceneRegistry::instance().at("dipole_top", "scene").extra.torque_depends_on_orientation);
+}

@@ -92,7 +92,7 @@ void list_markdown(std::ostream& out) {
         out << fmt::format("\n### `{}`\n\n{}. Source: {}. Default ladder: dt = {} s.{}\n\n| key | default | unit | meaning |\n"
                            "|---|---|---|---|\n",
                            id, e.summary, e.source, dts,
-                           scene->in_default_suite() ? "" : " Not in the default suite: it runs only when named (`--scenes`).");
+                           e.extra.in_default_suite ? "" : " Not in the default suite: it runs only when named (`--scenes`).");
         for (const auto& p : scene->params.entries()) {
             std::string value;
             for (double v : p.value) value += fmt::format("{}{}", value.empty() ? "" : ", ", v);

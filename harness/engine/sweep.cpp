@@ -41,7 +41,7 @@ std::vector<RunSpec> plan_sweep(const SweepSpec& spec) {
     std::vector<std::string> scene_ids = spec.scenes;
     if (scene_ids.empty())
         for (const auto& id : scenes.ids())
-            if (make_scene(id)->in_default_suite()) scene_ids.push_back(id);
+            if (scenes.at(id, "scene").extra.in_default_suite) scene_ids.push_back(id);
     if (spec.ensemble < 1 || spec.ensemble > 1000) throw InputError(fmt::format("--ensemble must be 1 to 1000, got {}", spec.ensemble));
     const auto scheme_ids = spec.schemes.empty() ? schemes.ids() : spec.schemes;
     for (const auto& id : scheme_ids) schemes.at(id, "scheme");

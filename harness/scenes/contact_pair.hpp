@@ -41,7 +41,6 @@ public:
         return {{"kinetic", kinetic_energy(b)}, {"spring", spring_energy(b)}};
     }
     bool conserves_energy() const override { return damping_ == 0.0; }
-    bool conserves_angular_momentum() const override { return false; }  // the fixed normal is external
 
     // What the stability study needs to know.
     double stiffness() const { return stiffness_; }

@@ -15,6 +15,7 @@ namespace {
 
 class CylinderFree final : public Scene {
 public:
+    static constexpr SceneTraits traits{.reference = ReferenceKind::closed_form, .conserves_angular_momentum = true};
     CylinderFree() {
         params.declare("radius", {0.5}, "m", "cylinder radius");
         params.declare("height", {1.5}, "m", "cylinder height (along body z)");
@@ -42,11 +43,9 @@ public:
         b.torque.set(0, Vec3::Zero());
     }
 
-    ReferenceKind reference_kind() const override { return ReferenceKind::closed_form; }
     ReferenceState exact(std::size_t, double t) const override {
         return {exact_->orientation(t), exact_->omega_world(t)};
     }
-    bool conserves_angular_momentum() const override { return true; }
 
 private:
     SolidCylinder cylinder_{};

@@ -13,6 +13,7 @@ namespace {
 
 class DipoleTop final : public Scene {
 public:
+    static constexpr SceneTraits traits{.reference = ReferenceKind::odeint, .torque_depends_on_orientation = true};
     DipoleTop() {
         params.declare("inertia", {1.0, 1.5, 2.0}, "kg m^2", "principal moments I'1, I'2, I'3");
         params.declare("dipole", {0.0, 0.0, 1.0}, "A m^2", "magnetic dipole moment, body frame");
@@ -41,8 +42,6 @@ public:
         b.torque.set(0, to_world(b.orientation[0], dipole_).cross(field_));
     }
 
-    ReferenceKind reference_kind() const override { return ReferenceKind::odeint; }
-    bool torque_depends_on_orientation() const override { return true; }
     double energy(const Bodies& b) const override { return rotational_energy(b) + potential(b); }
     std::vector<std::pair<std::string, double>> energy_parts(const Bodies& b) const override {
         return {{"rotational", rotational_energy(b)}, {"potential", potential(b)}};

@@ -84,7 +84,6 @@ public:
     // No per-step reference: the motion is chaotic after the first bounces, and a sampled
     // trajectory at dt = 1e-7 would take gigabytes. The scene's physics is checked instead
     // by Odeint conserving its energy (tests/test_scenes.cpp).
-    ReferenceKind reference_kind() const override { return ReferenceKind::none; }
     std::vector<double> contact_gaps(const Bodies& b) const override {
         const Vec3 axis = fibre_axis(b);
         std::vector<double> gaps;

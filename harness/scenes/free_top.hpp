@@ -13,14 +13,13 @@ namespace rotbench {
 
 class FreeTopScene : public Scene {
 public:
+    static constexpr SceneTraits traits{.reference = ReferenceKind::closed_form, .conserves_angular_momentum = true};
     Bodies initial_state() const override { return single_body(1.0, inertia_, q0_, omega0_body_); }
     void evaluate_forces(Bodies& b, double) const override {
         b.force.set(0, Vec3::Zero());
         b.torque.set(0, Vec3::Zero());
     }
-    ReferenceKind reference_kind() const override { return ReferenceKind::closed_form; }
     ReferenceState exact(std::size_t, double t) const override { return {exact_->orientation(t), exact_->omega_world(t)}; }
-    bool conserves_angular_momentum() const override { return true; }
 
 protected:
     // Called by the scene's prepare() once it has read its parameters.

@@ -15,6 +15,7 @@ namespace rotbench {
 
 class GranularScene : public Scene {
 public:
+    static constexpr SceneTraits traits{.in_default_suite = false, .times_in_run = true};
     GranularScene() {
         params.declare("clusters", {200}, "-", "number of ballast stones");
         params.declare("seed", {1}, "-", "packing seed (shapes, places and orientations): one member of an ensemble");
@@ -32,8 +33,6 @@ public:
         return {{"kinetic", kinetic_energy(b)}, {"potential", system_->potential_energy(b)}, {"elastic", system_->elastic_energy()}};
     }
     bool conserves_energy() const override { return false; }  // damped and frictional
-    bool in_default_suite() const override { return false; }
-    bool times_in_run() const override { return true; }
     ClusterSystem& system() const { return *system_; }
 
 protected:

@@ -14,6 +14,7 @@ namespace {
 
 class ParticleContact final : public ContactPairScene {
 public:
+    static constexpr SceneTraits traits{.reference = ReferenceKind::odeint, .in_default_suite = false};
     ParticleContact() {
         // A ballast-like grain: the ellipsoid of semi-axes 30, 20, 15 mm at 0.1 kg.
         params.declare("inertia", {1.25e-5, 2.25e-5, 2.6e-5}, "kg m^2", "principal moments of the particle");
@@ -39,8 +40,6 @@ public:
         b.omega.set(1, b.omega[1] + omega_ * Vec3(-3.0, 1.0, 2.0).normalized());
         return b;
     }
-    ReferenceKind reference_kind() const override { return ReferenceKind::odeint; }
-    bool in_default_suite() const override { return false; }
     // Ladders from Peng's prediction down, for `rotbench run --scenes particle_contact`.
     std::vector<double> default_dts() const override { return halving_ladder(0.5 * predicted_limit(), 5); }
     std::vector<double> quick_dts() const override { return halving_ladder(0.5 * predicted_limit(), 3); }

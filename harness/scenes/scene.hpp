@@ -3,6 +3,7 @@
 #pragma once
 
 #include "harness/scenes/params.hpp"
+#include "harness/scenes/stability_probe.hpp"
 #include "references/dynamics.hpp"
 #include "schemes/bodies.hpp"
 #include "schemes/quaternion.hpp"
@@ -12,6 +13,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -40,10 +42,30 @@ public:
     virtual Snapshots snapshots() const { return {}; }
 };
 
+// Where a scene's reference solution comes from: a closed form, or Boost.Odeint on the
+// scene's own equations of motion (references/odeint_reference.hpp).
+enum class ReferenceKind { none, closed_form, odeint };
+
+// What a scene is, whatever its parameters: stated once by its class (`static constexpr
+// SceneTraits traits{...}`, inherited from its base where not), held by its registry entry,
+// so that planning and listing read them without building the scene.
+struct SceneTraits {
+    ReferenceKind reference = ReferenceKind::none;
+    bool conserves_angular_momentum = false;     // no external torque
+    bool torque_depends_on_orientation = false;  // the torque seen in the body frame changes with q (dipole_top): the
+                                                 // class of scenes where the "with torque" orders apply
+    bool in_default_suite = true;                // in `rotbench run`'s default selection (false: run only when named)
+    bool times_in_run = false;  // runs too long to be repeated for timing (the granular scenes): their cost is measured
+                                // in the run itself, the scheme's share of each step included (timed_scheme.hpp)
+    bool stability = false;     // a StabilityProbe (stability_probe.hpp): a scene of the stability study; set by type
+};
+
 // The bodies, their initial state and their force/torque model come from Dynamics
 // (references/dynamics.hpp), which the Odeint reference integrates.
 class Scene : public Dynamics {
 public:
+    using ReferenceKind = rotbench::ReferenceKind;
+    static constexpr SceneTraits traits{};
 
     // Declared by the scene's constructor (with `t_end` always), then overridden by the
     // user, then `prepare` validates them (InputError naming the key) and builds what
@@ -59,10 +81,9 @@ public:
     // What `--quick` sets besides the ladder (a smaller granular scene), before the user's keys.
     virtual ParamOverrides quick_params() const { return {}; }
 
-    // Where the reference solution comes from: a closed form (`exact`), or Boost.Odeint
-    // on this scene's own equations of motion (references/odeint_reference.hpp).
-    enum class ReferenceKind { none, closed_form, odeint };
-    virtual ReferenceKind reference_kind() const { return ReferenceKind::none; }
+    // Its class's traits (the registry entry's).
+    const SceneTraits& scene_traits() const { return traits_; }
+    ReferenceKind reference_kind() const { return traits_.reference; }
     bool has_reference() const { return reference_kind() != ReferenceKind::none; }
     virtual ReferenceState exact(std::size_t body, double t) const;
     // An Odeint scene whose angular velocity alone has a closed form gives it here (body frame).
@@ -82,29 +103,36 @@ public:
     // Scenes whose report shows the energy against time (the seed's Figures 8-11 for the
     // fibre): every scene whose true motion conserves it.
     bool reports_energy_series() const { return conserves_energy(); }
-    virtual bool conserves_angular_momentum() const { return false; }
-    // The torque seen in the body frame changes with the orientation (dipole_top): the
-    // class of scenes where reports/expected_orders.hpp's "with torque" orders apply.
-    virtual bool torque_depends_on_orientation() const { return false; }
-    // Runs too long to be repeated for timing (the granular scenes): their cost is measured in
-    // the run itself, the scheme's share of each step included (harness/engine/timed_scheme.hpp).
-    virtual bool times_in_run() const { return false; }
+    bool conserves_angular_momentum() const { return traits_.conserves_angular_momentum; }
+    bool torque_depends_on_orientation() const { return traits_.torque_depends_on_orientation; }
+    bool times_in_run() const { return traits_.times_in_run; }
     // A fresh probe for each measured run; none for most scenes.
     virtual std::unique_ptr<SceneProbe> make_probe() const { return nullptr; }
-    // In `rotbench run`'s default selection (false: a scene run only when named).
-    virtual bool in_default_suite() const { return true; }
+
+private:
+    template <class S>
+    friend struct RegisterScene;
+    SceneTraits traits_;
 };
 
-using SceneRegistry = Registry<Scene>;
+using SceneRegistry = Registry<Scene, SceneTraits>;
 
 template <class S>
 struct RegisterScene {
+    static constexpr SceneTraits traits_of() {
+        SceneTraits t = S::traits;
+        t.stability = std::is_base_of_v<StabilityProbe, S>;
+        return t;
+    }
     RegisterScene(std::string id, std::string summary, std::string source, std::string notes = "") {
-        SceneRegistry::instance().add({id, std::move(summary), std::move(source), std::move(notes), [id] {
+        SceneRegistry::instance().add({id, std::move(summary), std::move(source), std::move(notes),
+                                       [id] {
                                            auto scene = std::make_unique<S>();
                                            scene->params.set_owner(id);
+                                           scene->traits_ = traits_of();
                                            return scene;
-                                       }});
+                                       },
+                                       traits_of()});
     }
 };
 

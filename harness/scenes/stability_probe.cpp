@@ -7,7 +7,7 @@ namespace rotbench {
 std::vector<std::string> stability_scene_ids() {
     std::vector<std::string> ids;
     for (const auto& id : SceneRegistry::instance().ids())
-        if (dynamic_cast<const StabilityProbe*>(SceneRegistry::instance().at(id, "scene").make().get())) ids.push_back(id);
+        if (SceneRegistry::instance().at(id, "scene").extra.stability) ids.push_back(id);
     return ids;
 }
 

@@ -13,6 +13,7 @@ namespace {
 
 class TorquedCylinder final : public Scene {
 public:
+    static constexpr SceneTraits traits{.reference = ReferenceKind::odeint};
     TorquedCylinder() {
         params.declare("density", {7750.0}, "kg/m^3", "density");
         params.declare("radius", {0.05}, "m", "cylinder radius");
@@ -40,7 +41,6 @@ public:
         b.torque.set(0, to_world(b.orientation[0], Vec3(0.0, 0.0, torque_)));  // body-fixed torque
     }
 
-    ReferenceKind reference_kind() const override { return ReferenceKind::odeint; }
     bool conserves_energy() const override { return false; }  // the torque does work
     bool gains_energy() const override { return true; }
     std::optional<Vec3> exact_omega_body(std::size_t, double t) const override {
