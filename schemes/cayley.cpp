@@ -58,11 +58,8 @@ const RegisterScheme<KickDriftKick<CayleyRotation>> registration(
     "Our reading: kick of L with T^n; discrete Euler-Poincare step q^{n+1} = q^n cay(dt xi) with "
     "P = I xi + dt/2 xi x I xi + dt^2/4 (xi.I xi) xi for the body momentum P at q^n, solved by Newton's method; kick "
     "with T^{n+1}. Symplectic and time-reversible; |q| = 1 kept. A step where Newton fails is a failed run.",
-    {.without_torque = {2, "a variational integrator with a symmetric discrete Lagrangian: second order"},
-     .with_torque = {2, "trapezoidal kicks around a second-order rotation: second order"},
-     .conserves_momentum = true,
-     .bounded_energy = true,
-     .time_reversible = true});
+    kick_drift_kick_claims({.order = {2, "a variational integrator with a symmetric discrete Lagrangian: second order"},
+                            .symmetric = true}));
 
 }  // namespace
 }  // namespace rotbench

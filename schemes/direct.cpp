@@ -30,7 +30,6 @@ ROTBENCH_INLINE Vec3T<S> acceleration(const Vec3T<S>& omega_body, const Vec3T<S>
 
 template <bool Gyroscopic, class S = double>
 struct Direct {
-    static constexpr const char* family = "seed";  // SchemeClaims::family
     template <class T>
     using rebind = Direct<Gyroscopic, T>;
     struct Memory {
@@ -65,14 +64,15 @@ const RegisterScheme<Direct<true>> registration(
     "its dt = 1e-2 row. First order in w.",
     {.without_torque = {1, "eq. 41 takes the gyroscopic term at w^{n+1/2} and the corrector in the frame of q^n (the "
                            "readings that reproduce Table 1): an O(dt) error in the end-of-step acceleration, so first order"},
-     .with_torque = {1, "as without torque; the torque itself is averaged over the step (eqs. 36, 43)"}});
+     .with_torque = {1, "as without torque; the torque itself is averaged over the step (eqs. 36, 43)"},
+     .family = "seed"});
 const RegisterScheme<Direct<false>> without_gyroscopic_term(
     "no_gyro", "NEGATIVE CONTROL: direct without the gyroscopic term w x Iw (wrong for non-spherical bodies)",
     "deliberately wrong: I dw'/dt = T' as for a sphere, as some DEM codes integrate every body",
     "The direct step with eqs. 34 and 41 reduced to dw'/dt = T'/I'. It does not converge to the motion of a "
     "non-spherical body: its error does not fall with dt, and a torque-free top keeps a constant body-frame w' "
     "instead of precessing, so the world angular momentum is not conserved.",
-    {.sound = false});
+    {.sound = false, .family = "seed"});
 
 }  // namespace
 }  // namespace rotbench

@@ -47,11 +47,7 @@ const RegisterScheme<KickDriftKick<ExactFreeRotation>> registration(
     "otherwise the Taylor series of Euler's equations and of the precession rate summed to round-off, or the closed "
     "form, verified against Odeint, when a step is too long for the series), kick with T^{n+1}. Exact without torque; "
     "symplectic Strang splitting with it.",
-    {.with_torque = {2, "Strang splitting of the exact free flow and the torque kicks: second order"},
-     .exact_without_torque = true,
-     .conserves_momentum = true,
-     .bounded_energy = true,
-     .time_reversible = true});
+    kick_drift_kick_claims({.exact = true, .symmetric = true}));
 
 }  // namespace
 }  // namespace rotbench

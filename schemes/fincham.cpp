@@ -10,8 +10,7 @@
 namespace rotbench {
 namespace {
 
-struct FinchamRotation {
-    static constexpr bool unit_result = true;
+struct FinchamRotation : UnitResult {
     template <class S>
     static QuatT<S> rotate(const RigidBodyT<S>& start, const Vec3T<S>& momentum, double dt) {
         const QuatT<S>& q = start.q;
@@ -26,9 +25,7 @@ const RegisterScheme<KickDriftKick<FinchamRotation>> registration(
     "Fincham, Mol. Simul. 8:165 (1992); Allen & Tildesley, Computer Simulation of Liquids, sec. 3.3",
     "Synchronous form of the leapfrog: kick of L with T^n, explicit mid-point rule on dq/dt = 1/2 w q (half step "
     "with w^n, full step with w^{n+1/2} from L^{n+1/2} at q^{n+1/2}), normalisation, kick with T^{n+1}.",
-    {.without_torque = {2, "the explicit mid-point rule on q at constant L: second order"},
-     .with_torque = {2, "trapezoidal kicks around a second-order rotation: second order"},
-     .conserves_momentum = true});
+    kick_drift_kick_claims({.order = {2, "the explicit mid-point rule on q at constant L: second order"}}));
 
 }  // namespace
 }  // namespace rotbench

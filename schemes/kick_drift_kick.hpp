@@ -17,6 +17,7 @@
 #include <concepts>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 
 namespace rotbench {
 
@@ -29,22 +30,29 @@ namespace rotbench {
 // body only, `static Quat rotate(const RigidBody&, const Vec3&, double)`, works as well; its
 // scheme then steps one body at a time. A policy that changes frames at q^n more than once
 // may take its body axes (body_axes) as well: rotate(start, momentum, axes, dt). One that
-// returns a normalised q says so, `static constexpr bool unit_result = true;`.
+// returns a normalised q says so by deriving from UnitResult (a misspelt base does not
+// compile, where a misspelt flag would silently take the other path).
+template <class Rotation, class S = double>
+concept RotationPolicy = requires(const RigidBodyT<S>& b, const Vec3T<S>& momentum, double dt) {
+    { Rotation::rotate(b, momentum, dt) } -> std::same_as<QuatT<S>>;
+} || requires(const RigidBodyT<S>& b, const Vec3T<S>& momentum, const BodyAxesT<S>& axes, double dt) {
+    { Rotation::rotate(b, momentum, axes, dt) } -> std::same_as<QuatT<S>>;
+};
+
+struct UnitResult {};
+
 #if ROTBENCH_SIMD
 template <class Rotation>
-concept RotatesPacks = requires(const RigidBodyT<Pack>& b, const Vec3T<Pack>& momentum, double dt) {
-    { Rotation::rotate(b, momentum, dt) } -> std::same_as<QuatT<Pack>>;
-} || requires(const RigidBodyT<Pack>& b, const Vec3T<Pack>& momentum, const BodyAxesT<Pack>& axes, double dt) {
-    { Rotation::rotate(b, momentum, axes, dt) } -> std::same_as<QuatT<Pack>>;
-};
+concept RotatesPacks = RotationPolicy<Rotation, Pack>;
 #else
 template <class Rotation>
 concept RotatesPacks = false;
 #endif
 
 template <class Rotation, class S = double>
+    requires RotationPolicy<Rotation>
 struct KickDriftKick {
-    static constexpr const char* family = "kick_drift_kick";  // SchemeClaims::family
+    static_assert(!requires { Rotation::unit_result; }, "a policy that returns a unit q derives from UnitResult");
     template <class T>
         requires RotatesPacks<Rotation>
     using rebind = KickDriftKick<Rotation, T>;
@@ -75,11 +83,35 @@ private:
     // w = I(q)^-1 L. Of a normalised q, through its axes with no division by |q|^2 (shorter
     // than two quaternion rotations, which divide by it).
     ROTBENCH_INLINE static Vec3T<S> omega(const RigidBodyT<S>& b, const Memory& m) {
-        if constexpr (requires { requires Rotation::unit_result; })
+        if constexpr (std::is_base_of_v<UnitResult, Rotation>)
             return omega_from_momentum(body_axes<true>(b.q), b.inertia.cwiseInverse(), m.momentum);
         else return omega_from_momentum(b.q, b.inertia, m.momentum);
     }
 };
+
+template <class Rotation>
+inline constexpr const char* kernel_family<KickDriftKick<Rotation>> = "kick_drift_kick";
+
+// What a kick-drift-kick scheme claims by its structure, from what its rotation at constant L
+// claims: the world angular momentum kept to round-off (no kick or free rotation changes it
+// without torque); a rotation of order 2 or more, or the exact flow, stays second order between
+// the trapezoidal kicks; a time-symmetric rotation makes the step symmetric, so time-reversible
+// with bounded energy. The registration adds only what is the scheme's own.
+struct RotationClaims {
+    OrderClaim order;        // of the rotation at constant L; none when exact
+    bool exact = false;      // the free flow itself
+    bool symmetric = false;  // time-symmetric: rotating by -dt undoes rotating by dt
+};
+inline SchemeClaims kick_drift_kick_claims(const RotationClaims& rotation) {
+    SchemeClaims c;
+    c.without_torque = rotation.order;
+    c.exact_without_torque = rotation.exact;
+    if (rotation.exact || rotation.order.order >= 2)
+        c.with_torque = {2, "trapezoidal kicks around a rotation of second order or better: second order"};
+    c.conserves_momentum = true;
+    c.bounded_energy = c.time_reversible = rotation.symmetric;
+    return c;
+}
 
 // The implicit mid-step angular velocity of the time-reversible schemes: the fixed point of
 //   w_mid = I(q_mid(w_mid))^-1 L,

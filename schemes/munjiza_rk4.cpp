@@ -11,7 +11,8 @@ const RegisterScheme<MunjizaRk4<>> registration(
     {.without_torque = {2, "H is exact without torque; the RK average of w followed by one exponential map (eqs. "
                            "50-51) misses the commutator of the rotations within the step: second order, not fourth"},
      .with_torque = {1, "eq. 44 advances H with the start-of-step torque only (explicit Euler): first order"},
-     .conserves_momentum = true});
+     .conserves_momentum = true,
+     .family = "seed"});
 
 }  // namespace
 }  // namespace rotbench

@@ -23,7 +23,6 @@ struct ExactIncrement {
 
 template <class Increment = ExactIncrement, class S = double>
 struct MunjizaRk4 {
-    static constexpr const char* family = "seed";  // SchemeClaims::family
     template <class T>
         requires(Increment::steps_packs)
     using rebind = MunjizaRk4<Increment, T>;

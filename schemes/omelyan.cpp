@@ -32,11 +32,8 @@ const RegisterScheme<KickDriftKick<OmelyanRotation>> registration(
     "Kick of L with T^n; q^{n+1} = [(1 - |u|^2) q^n + 2 u q^n]/(1 + |u|^2), u = dt w_mid/4, with w_mid from "
     "L^{n+1/2} at the mid-point (q^n + q^{n+1})/2, iterated to round-off; kick with T^{n+1}. A step where the "
     "iteration does not converge in 100 passes is recorded as a failed run.",
-    {.without_torque = {2, "an implicit mid-point rule on q at constant L, time-reversible: second order"},
-     .with_torque = {2, "trapezoidal kicks around a second-order rotation: second order"},
-     .conserves_momentum = true,
-     .bounded_energy = true,
-     .time_reversible = true});
+    kick_drift_kick_claims({.order = {2, "an implicit mid-point rule on q at constant L, time-reversible: second order"},
+                            .symmetric = true}));
 
 }  // namespace
 }  // namespace rotbench

@@ -17,8 +17,7 @@ ROTBENCH_INLINE QuatT<S> euler_step(const QuatT<S>& q, const Vec3T<S>& omega, do
     return normalized(QuatT<S>(q.coeffs() + (0.5 * h) * pure_times<S>(omega, q)));
 }
 
-struct RichardsonRotation {
-    static constexpr bool unit_result = true;
+struct RichardsonRotation : UnitResult {
     template <class S>
     static QuatT<S> rotate(const RigidBodyT<S>& start, const Vec3T<S>& momentum, const BodyAxesT<S>& axes, double dt) {
         const QuatT<S>& q = start.q;
@@ -38,9 +37,7 @@ const RegisterScheme<KickDriftKick<RichardsonRotation>> registration(
     "Kick of L with T^n, then q advanced by 2 q(two Euler half steps) - q(one Euler step), w recomputed from L at "
     "the half step, each normalised; kick with T^{n+1}. w from L through the body axes of q. "
     "Not symplectic and not time-reversible.",
-    {.without_torque = {2, "the extrapolation cancels the O(dt^2) local error of the Euler steps: second order"},
-     .with_torque = {2, "trapezoidal kicks around a second-order rotation: second order"},
-     .conserves_momentum = true});
+    kick_drift_kick_claims({.order = {2, "the extrapolation cancels the O(dt^2) local error of the Euler steps: second order"}}));
 
 }  // namespace
 }  // namespace rotbench

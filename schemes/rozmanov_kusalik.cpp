@@ -27,11 +27,7 @@ const RegisterScheme<KickDriftKick<RozmanovKusalikRotation>> registration(
     "Our reading of RVV1: kick of L with T^n; q^{n+1} = exp(dt w_mid) q^n with w_mid = I(q_mid)^-1 L^{n+1/2} at "
     "q_mid = exp(dt/2 w_mid) q^n, iterated to round-off; kick with T^{n+1}. A step where the iteration does not "
     "converge in 100 passes is recorded as a failed run.",
-    {.without_torque = {2, "a time-reversible mid-point rotation at constant L: second order"},
-     .with_torque = {2, "trapezoidal kicks around a second-order rotation: second order"},
-     .conserves_momentum = true,
-     .bounded_energy = true,
-     .time_reversible = true});
+    kick_drift_kick_claims({.order = {2, "a time-reversible mid-point rotation at constant L: second order"}, .symmetric = true}));
 
 }  // namespace
 }  // namespace rotbench

@@ -47,7 +47,7 @@ struct SchemeClaims {
     bool time_reversible = false;       // stepping back with -dt from the end returns to the start, to round-off
     bool sound = true;                  // false: a deliberately wrong control (no_gyro), expected to fail
     // Not a claim: the group the report draws the scheme with ("seed", "kick_drift_kick", or
-    // empty for the others). RegisterScheme takes it from the kernel's `family` when not given.
+    // empty for the others). RegisterScheme sets "kick_drift_kick" for a KickDriftKick kernel.
     std::string family;
 
     bool claims_nothing() const {
@@ -74,16 +74,28 @@ using RigidBody = RigidBodyT<double>;
 template <class Kernel>
 concept PackKernel = bool(ROTBENCH_SIMD) && requires { typename Kernel::template rebind<double>; };
 
-// Adapts a per-body kernel to the array interface. A kernel is a small type with
+// A kernel: the step of one body, a small type with
 //   struct Memory;                                  per-body values kept between phases
 //   static void start(const RigidBody&, Memory&);
 //   static void predict(RigidBody&, Memory&, double dt);
 //   static void correct(RigidBody&, Memory&, double dt);
+// and nothing else that rotbench reads, but `rebind` (PackKernel, above): the one way to step
+// packs. Everything else a scheme states goes in its registration's SchemeClaims, whose
+// designated initialisers do not compile when misspelt.
+template <class Kernel>
+concept SchemeKernel = requires { typename Kernel::Memory; } &&
+                       requires(const RigidBody& c, RigidBody& b, typename Kernel::Memory& m, double dt) {
+                           Kernel::start(c, m);
+                           Kernel::predict(b, m, dt);
+                           Kernel::correct(b, m, dt);
+                       };
+
+// Adapts a kernel to the array interface.
 // The loops below call the kernel directly: no virtual call or allocation per body. A
 // PackKernel steps whole packs of bodies with its pack instantiation, read straight from the
 // arrays, and the remaining bodies (all of them in a scene of fewer bodies than a pack) one
 // by one with its double instantiation.
-template <class Kernel>
+template <SchemeKernel Kernel>
 class BatchedScheme final : public RotationScheme {
 public:
     void start(const Bodies& b) override {
@@ -176,13 +188,18 @@ private:
 #endif
 };
 
-// Registers a kernel under an id at static-initialisation time.
+// The report's group of a kernel's schemes (SchemeClaims::family): empty, unless the kernel's
+// header specialises this (kick_drift_kick.hpp).
 template <class Kernel>
+inline constexpr const char* kernel_family = "";
+
+// Registers a kernel under an id at static-initialisation time.
+template <SchemeKernel Kernel>
 struct RegisterScheme {
+    static_assert(!requires { Kernel::family; }, "a kernel's `family` is no longer read: give .family in its SchemeClaims");
     RegisterScheme(std::string id, std::string summary, std::string source, std::string notes = "",
                    SchemeClaims claims = {}) {
-        if constexpr (requires { Kernel::family; })
-            if (claims.family.empty()) claims.family = Kernel::family;
+        if (claims.family.empty()) claims.family = kernel_family<Kernel>;
         SchemeRegistry::instance().add({std::move(id), std::move(summary), std::move(source), std::move(notes),
                                         [] { return std::make_unique<BatchedScheme<Kernel>>(); }, std::move(claims)});
     }

@@ -18,7 +18,6 @@ namespace {
 
 template <bool ReestimateTorque, class S = double>
 struct ZhaoVanWachem {
-    static constexpr const char* family = "seed";  // SchemeClaims::family
     template <class T>
     using rebind = ZhaoVanWachem<ReestimateTorque, T>;
     struct Memory {
@@ -55,7 +54,8 @@ const RegisterScheme<ZhaoVanWachem<false>> original(
     "Velocity update w'^{n+1} = w'^n + dt I'^-1 (T'^n - w'^{n+1/2} x I'w'^{n+1/2}): the mid-point "
     "update of Zhao & van Wachem with the only torque a one-evaluation step has, T^n.",
     {.without_torque = {2, "without torque, w' follows the explicit mid-point rule (eqs. 56-57, 63): second order"},
-     .with_torque = {1, "the velocity update uses the start-of-step torque only: first order"}});
+     .with_torque = {1, "the velocity update uses the start-of-step torque only: first order"},
+     .family = "seed"});
 const RegisterScheme<ZhaoVanWachem<true>> corrected(
     "zvw_corrected", "Zhao & van Wachem with the end-of-step torque re-estimate",
     "Irazabal et al., seed 000, eqs. 38, 40, 41, 54-64",
@@ -63,7 +63,8 @@ const RegisterScheme<ZhaoVanWachem<true>> corrected(
     "zvw and zvw_corrected coincide without torque, as the seed states for test case 1. The "
     "torque is T^{n+1} taken to the body frame with q^{n+1} (eq. 40).",
     {.without_torque = {2, "identical to zvw without torque"},
-     .with_torque = {1, "the velocity update uses the end-of-step torque only (eq. 63): first order"}});
+     .with_torque = {1, "the velocity update uses the end-of-step torque only (eq. 63): first order"},
+     .family = "seed"});
 
 }  // namespace
 }  // namespace rotbench
