@@ -2,11 +2,15 @@
 // finished, and `rotbench run --resume DIR` ends with the files an uninterrupted run writes.
 #include "harness/io/journal.hpp"
 #include "harness/io/output_dir.hpp"
+#include "harness/io/run_record.hpp"
 #include "tests/cli_helpers.hpp"
 
 #include <catch2/catch.hpp>
 #include <chrono>
+#include <cmath>
 #include <csignal>
+#include <cstring>
+#include <limits>
 #include <fstream>
 #include <sys/wait.h>
 #include <thread>
@@ -24,12 +28,12 @@ const std::vector<std::string> sweep = {"run", "--scenes", "dipole_top,asymmetri
                                         "direct,zvw,no_squish,cayley", "--quick", "--jobs", "2", "--quiet"};
 constexpr std::size_t sweep_runs = 56;
 
-// The whole records of the journal's runs file (harness/journal.hpp): each ends with a line "end INDEX".
+// The whole records of the journal's runs file (harness/io/run_record.hpp): one line each.
 std::size_t finished_runs(const fs::path& journal) {
-    std::ifstream in(journal / "runs");
+    std::ifstream in(journal / "runs.jsonl");
     std::size_t n = 0;
     for (std::string line; std::getline(in, line);)
-        if (line.rfind("end ", 0) == 0 && !in.eof()) ++n;  // a last line without its line break is cut short
+        if (!in.eof()) ++n;  // a last line without its line break is cut short
     return n;
 }
 
@@ -137,10 +141,10 @@ TEST_CASE("a journal record cut short by a kill counts as not finished and is cu
         journal.record(0, a);
         journal.record(2, b);
     }
-    const auto whole = fs::file_size(dir / "partial" / "runs");
-    std::ofstream(dir / "partial" / "runs", std::ios::app) << "run 1 500 60 0\nscene,scheme,dt,metric,value\ndipole_to";
+    const auto whole = fs::file_size(dir / "partial" / "runs.jsonl");
+    std::ofstream(dir / "partial" / "runs.jsonl", std::ios::app) << R"({"index":1,"run":{"spec":{"scene":"dipole_to)";
     const Journal resumed = Journal::reopen(OutputDir::open(dir, {"run", "results.csv", {}, false, true}), "plan/1/1", plan);
-    CHECK(fs::file_size(dir / "partial" / "runs") == whole);  // the cut record is gone
+    CHECK(fs::file_size(dir / "partial" / "runs.jsonl") == whole);  // the cut record is gone
     const auto runs = resumed.finished();
     REQUIRE(runs.size() == 2);
     CHECK(runs.at(0).spec.scheme == "direct");
@@ -174,22 +178,39 @@ TEST_CASE("journal records that do not belong to the plan are refused, naming th
     fs::remove_all(dir);
 }
 
-TEST_CASE("a record with a count missing is no record: the run is redone, not misread") {
-    const RunResult a = run_one({"dipole_top", "direct", 1e-3, 0.01}, {.measure_time = false, .series_samples = 10});
-    const std::vector<RunSpec> plan = {a.spec, a.spec};
-    for (const int dropped : {1, 2}) {
-        INFO(dropped << " counts dropped");
-        const fs::path dir = fresh_dir("journal_short_header");
-        { Journal::start(OutputDir::open(dir, {"run", "results.csv", {}}), {"run"}, "plan/1/1", plan).record(0, a); }
-        std::string text = read(dir / "partial" / "runs");
-        const auto header_end = text.find('\n');
-        std::string header = text.substr(0, header_end);
-        REQUIRE(header.substr(header.size() - 4) == " 0 0");  // no snapshots, no walls in this run
-        header.resize(header.size() - 2 * static_cast<std::size_t>(dropped));
-        text.replace(0, header_end, header);
-        write(dir / "partial" / "runs", text);
-        const Journal resumed = Journal::reopen(OutputDir::open(dir, {"run", "results.csv", {}, false, true}), "plan/1/1", plan);
-        CHECK(resumed.finished().empty());
-        fs::remove_all(dir);
+TEST_CASE("the run store's record gives back every field of a run, bit for bit, NaN and infinities too") {
+    RunResult a = run_one({"dipole_top", "direct", 1e-3, 0.01, {{"field", {0, 0, 2}}}}, {.measure_time = true, .series_samples = 10});
+    a.spec.timed = false;
+    a.metrics.emplace_back("odd", -INFINITY);
+    a.metrics.emplace_back("odder", std::numeric_limits<double>::quiet_NaN());
+    a.metrics.emplace_back("tiny", std::numeric_limits<double>::denorm_min());
+    a.failure = "quoted \"text\", a line break\nand \x01 a control";
+    a.snapshots = {{0.5, 1e-300, -0.0, 3, 4}};
+    a.walls = {{0.5, 1, 2, 3, 4}};
+    const RunRecords back = parse_run_records(run_record(7, a), "record");
+    REQUIRE(back.runs.size() == 1);
+    CHECK(back.runs[0].first == 7);
+    const RunResult& b = back.runs[0].second;
+    CHECK(b.spec == a.spec);
+    REQUIRE(b.metrics.size() == a.metrics.size());
+    for (std::size_t i = 0; i < a.metrics.size(); ++i) {
+        CHECK(b.metrics[i].first == a.metrics[i].first);
+        CHECK(std::memcmp(&b.metrics[i].second, &a.metrics[i].second, sizeof(double)) == 0);
     }
+    CHECK(b.failure == a.failure);
+    CHECK(b.series_columns == a.series_columns);
+    CHECK(b.series == a.series);
+    CHECK(std::signbit(b.snapshots[0][2]));
+    CHECK(b.walls == a.walls);
+    CHECK(b.timing_samples == a.timing_samples);
+}
+
+TEST_CASE("a journal line that is not a record ends the records, and one of the record's shape with a wrong value is refused") {
+    const RunResult a = run_one({"asymmetric_free", "zvw", 1e-2, 0.1}, {.measure_time = false});
+    const std::string record = run_record(0, a);
+    CHECK(parse_run_records(record + "not json\n" + record, "j").runs.size() == 1);
+    CHECK(parse_run_records(record + "{\"other\": 1}\n" + record, "j").runs.size() == 1);
+    std::string wrong_kind = record;
+    wrong_kind.replace(wrong_kind.find("\"trajectory\""), 12, "\"trajectorx\"");
+    CHECK_THROWS_WITH(parse_run_records(wrong_kind, "j"), Catch::Contains("j: the record of run 0 is malformed"));
 }

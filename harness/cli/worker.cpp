@@ -3,7 +3,6 @@
 #include "harness/cli/verb.hpp"
 #include "harness/engine/interrupt.hpp"
 #include "harness/engine/run.hpp"
-#include "harness/io/results_csv.hpp"
 #include "harness/io/run_record.hpp"
 
 namespace rotbench {
@@ -13,14 +12,12 @@ class WorkerVerb final : public Verb {
 public:
     void add_options(CLI::App& command) override {
         command.group("");  // hidden from --help
-        command.add_option("--spec", spec_, "the run, as a record of runs.csv")->required();
+        command.add_option("--spec", spec_, "the run's spec, as the run store writes it")->required();
         command.add_option("--series", series_, "energy samples")->required();
         command.add_flag("--untimed", untimed_, "no timing repeats");
     }
     int run(const Invocation& how) override {
-        // The record under runs.csv's header (runs_csv of no run), and no metrics under results.csv's.
-        const auto specs = parse_results(results_csv({}), runs_csv({}) + spec_ + "\n", {}, "the worker's spec");
-        const RunSpec spec = specs.at(0).spec;
+        const RunSpec spec = parse_spec_record(spec_, "the worker's spec");
         const InterruptGuard guard;  // a signal ends the run at its next step, as in process
         const RunResult r = run_one(spec, {.measure_time = !untimed_, .series_samples = series_});
         if (r.interrupted) return 130;

@@ -5,7 +5,6 @@
 #include "harness/io/csv.hpp"
 #include "harness/io/output_files.hpp"
 #include "harness/io/plugin.hpp"
-#include "harness/io/results_csv.hpp"
 #include "harness/io/run_record.hpp"
 #include "harness/scenes/scene.hpp"
 
@@ -27,18 +26,6 @@ namespace {
 std::string& worker() {
     static std::string path;
     return path;
-}
-
-// The spec as the worker reads it: the runs.csv record of a run without metrics. A record
-// names its t_end, so the scene's own (t_end 0 in a spec) is written out.
-std::string spec_text(const RunSpec& spec, const Scene& scene) {
-    RunResult r;
-    r.spec = spec;
-    r.spec.t_end = scene.t_end();
-    const std::string csv = runs_csv({r});
-    std::string record = csv.substr(csv.find('\n') + 1);  // without the header,
-    record.pop_back();                                       // nor the line break an argument may not hold
-    return record;
 }
 
 // The default time limit: ten times what a slow plug-in (10 us per body-step) would take, and
@@ -197,7 +184,7 @@ RunResult run_isolated(const RunSpec& spec, const RunOptions& options, const Iso
     const auto scene = scene_of(spec);
     const double seconds = limits.seconds > 0 ? limits.seconds : default_timeout(spec, *scene);
     const std::size_t megabytes = limits.megabytes > 0 ? limits.megabytes : isolation_memory(1);
-    std::vector<std::string> args = {"__run", "--spec", spec_text(spec, *scene), "--series", std::to_string(options.series_samples)};
+    std::vector<std::string> args = {"__run", "--spec", spec_record(spec), "--series", std::to_string(options.series_samples)};
     if (!options.measure_time || !spec.timed) args.push_back("--untimed");
     const WorkerOutput worker = run_worker(args, seconds, megabytes);
     if (worker.interrupted) {
@@ -216,9 +203,9 @@ RunResult run_isolated(const RunSpec& spec, const RunOptions& options, const Iso
     if (records.runs.size() != 1 || records.whole_length != text.size())
         return fail("its worker's output was not one whole run" + last_line);
     RunResult result = std::move(records.runs.front().second);
-    const double t_end = result.spec.t_end;  // the scene's, as a run in process records it
-    result.spec = spec;                      // with what a record does not carry
-    result.spec.t_end = t_end;
+    RunSpec made = spec;
+    made.t_end = scene->t_end();  // every kind of run records the scene's duration, as in process
+    if (result.spec != made) return fail("its worker's output was the record of another run" + last_line);
     if (memory_limit_enforced() && result.failure.find("bad_alloc") != std::string::npos)
         result.failure += fmt::format(" (its worker's memory is limited to {} MB, --run-memory)", megabytes);
     return result;

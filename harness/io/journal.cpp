@@ -74,7 +74,7 @@ Journal Journal::start(const OutputDir& out, const std::vector<std::string>& arg
     out.write("partial/command", command);
     out.write("partial/cwd", fs::current_path().string());
     out.write("partial/plugins", plugins_text());
-    out.claim("partial/runs");
+    out.claim("partial/runs.jsonl");
     out.write("partial/plan", plan_line(plan_id, plan.size()));  // last: its presence marks a journal
     return Journal(out, plan);
 }
@@ -89,7 +89,7 @@ Journal Journal::reopen(const OutputDir& out, const std::string& plan_id, const 
         throw InputError("--resume " + out_dir.string() + ": a plug-in has changed since the run was interrupted (partial/plugins "
                          "names each with its hash); run it again with --overwrite");
     // A record cut short by a kill would sit between the runs appended from now on: cut it off.
-    const fs::path runs = out.claim("partial/runs");
+    const fs::path runs = out.claim("partial/runs.jsonl");
     if (fs::exists(runs)) {
         const std::size_t whole = read_records(runs, plan).whole_length;
         if (whole != fs::file_size(runs)) fs::resize_file(runs, whole);
@@ -111,12 +111,12 @@ fs::path Journal::working_directory(const fs::path& out_dir) {
     return cwd;
 }
 
-std::map<std::size_t, RunResult> Journal::finished() const { return read_records(journal_dir(out_.path()) / "runs", plan_).runs; }
+std::map<std::size_t, RunResult> Journal::finished() const { return read_records(journal_dir(out_.path()) / "runs.jsonl", plan_).runs; }
 
 void Journal::record(std::size_t plan_index, const RunResult& result) const {
     const std::string record = run_record(plan_index, result);
     // One write(2) in append mode per record: records of several threads do not interleave.
-    const fs::path file = journal_dir(out_.path()) / "runs";
+    const fs::path file = journal_dir(out_.path()) / "runs.jsonl";
     const int fd = ::open(file.c_str(), O_WRONLY | O_APPEND | O_CREAT | O_CLOEXEC, 0644);
     if (fd < 0) throw OutputError(fmt::format("cannot write {}: {}", file.string(), std::strerror(errno)));
     std::size_t written = 0;
@@ -135,7 +135,7 @@ void Journal::record(std::size_t plan_index, const RunResult& result) const {
 
 void Journal::discard(const fs::path& out_dir) {
     std::error_code ec;
-    for (const char* f : {"plan", "runs", "command", "cwd", "plugins"}) fs::remove(journal_dir(out_dir) / f, ec);
+    for (const char* f : {"plan", "runs.jsonl", "command", "cwd", "plugins"}) fs::remove(journal_dir(out_dir) / f, ec);
     fs::remove(journal_dir(out_dir), ec);  // when empty
 }
 

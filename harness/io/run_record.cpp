@@ -1,89 +1,132 @@
 #include "harness/io/run_record.hpp"
 
-#include "harness/io/csv.hpp"
-#include "harness/io/results_csv.hpp"
-#include "harness/io/series_csv.hpp"
-
-#include <charconv>
+#include <cmath>
 #include <fmt/format.h>
-#include <map>
+#include <nlohmann/json.hpp>
 
 namespace rotbench {
-
-std::string run_record(std::size_t index, const RunResult& result) {
-    const std::string results = results_csv({result}), runs = runs_csv({result});
-    const std::string series = result.series.empty() ? "" : series_csv(result);
-    const std::string snapshots = result.snapshots.empty() ? "" : snapshot_csv(result);
-    const std::string walls = result.walls.empty() ? "" : walls_csv(result);
-    return fmt::format("run {} {} {} {} {} {}\n{}{}{}{}{}end {}\n", index, results.size(), runs.size(), series.size(), snapshots.size(),
-                       walls.size(), results, runs, series, snapshots, walls, index);
-}
-
 namespace {
 
-// The texts of a record, in order: results, runs, series, snapshots, walls.
-constexpr int parts = 5;
+using json = nlohmann::json;
 
-// "run I R N S P W": seven words, the index and the parts' lengths; false for anything else.
-bool parse_header(const std::string& line, std::size_t& index, std::size_t (&lengths)[parts]) {
-    std::size_t values[parts + 1] = {};
-    if (line.compare(0, 4, "run ") != 0) return false;
-    std::size_t at = 4;
-    int count = 0;
-    for (; count < parts + 1; ++count) {
-        const auto [ptr, ec] = std::from_chars(line.data() + at, line.data() + line.size(), values[count]);
-        if (ec != std::errc()) return false;
-        at = static_cast<std::size_t>(ptr - line.data());
-        if (at == line.size()) break;
-        if (line[at] != ' ') return false;
-        ++at;
-    }
-    if (at != line.size() || count != parts) return false;  // 6 numbers, the last one ending the line
-    index = values[0];
-    for (int k = 0; k < parts; ++k) lengths[k] = values[k + 1];
-    return true;
+json number(double v) {
+    if (std::isnan(v)) return "nan";
+    if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
+    return v;
 }
+
+double number_of(const json& j) {
+    if (j.is_number()) return j.get<double>();
+    if (j == "nan") return std::nan("");
+    if (j == "inf") return INFINITY;
+    if (j == "-inf") return -INFINITY;
+    throw InputError("not a number: " + j.dump());
+}
+
+json numbers(const std::vector<double>& values) {
+    json out = json::array();
+    for (double v : values) out.push_back(number(v));
+    return out;
+}
+
+std::vector<double> numbers_of(const json& j) {
+    std::vector<double> out;
+    for (const auto& v : j) out.push_back(number_of(v));
+    return out;
+}
+
+json rows(const std::vector<std::vector<double>>& table) {
+    json out = json::array();
+    for (const auto& row : table) out.push_back(numbers(row));
+    return out;
+}
+
+std::vector<std::vector<double>> rows_of(const json& j) {
+    std::vector<std::vector<double>> out;
+    for (const auto& row : j) out.push_back(numbers_of(row));
+    return out;
+}
+
+json spec_json(const RunSpec& s) {
+    json params = json::array();
+    for (const auto& [key, values] : s.params) params.push_back({key, numbers(values)});
+    return {{"scene", s.scene},   {"scheme", s.scheme},   {"kind", kind_name(s.kind)}, {"dt", number(s.dt)},
+            {"t_end", number(s.t_end)}, {"params", params}, {"timed", s.timed}};
+}
+
+RunSpec spec_of(const json& j) {
+    RunSpec s;
+    s.scene = j.at("scene").get<std::string>();
+    s.scheme = j.at("scheme").get<std::string>();
+    s.kind = kind_from_name(j.at("kind").get<std::string>());
+    s.dt = number_of(j.at("dt"));
+    s.t_end = number_of(j.at("t_end"));
+    for (const auto& p : j.at("params")) s.params.push_back({p.at(0).get<std::string>(), numbers_of(p.at(1))});
+    s.timed = j.at("timed").get<bool>();
+    return s;
+}
+
+json run_json(const RunResult& r) {
+    json metrics = json::array();
+    for (const auto& [name, value] : r.metrics) metrics.push_back({name, number(value)});
+    return {{"spec", spec_json(r.spec)},         {"metrics", metrics},           {"failure", r.failure},
+            {"series_columns", r.series_columns}, {"series", rows(r.series)},     {"snapshots", rows(r.snapshots)},
+            {"walls", rows(r.walls)},             {"timing_samples", numbers(r.timing_samples)}};
+}
+
+RunResult run_of(const json& j) {
+    RunResult r;
+    r.spec = spec_of(j.at("spec"));
+    for (const auto& m : j.at("metrics")) r.metrics.emplace_back(m.at(0).get<std::string>(), number_of(m.at(1)));
+    r.failure = j.at("failure").get<std::string>();
+    r.series_columns = j.at("series_columns").get<std::vector<std::string>>();
+    r.series = rows_of(j.at("series"));
+    r.snapshots = rows_of(j.at("snapshots"));
+    r.walls = rows_of(j.at("walls"));
+    r.timing_samples = numbers_of(j.at("timing_samples"));
+    return r;
+}
+
+// The record's shape: whatever else a line holds, it is not a record of this store.
+bool is_record(const json& j) { return j.is_object() && j.contains("index") && j.at("index").is_number_unsigned() && j.contains("run"); }
 
 }  // namespace
 
+std::string run_record(std::size_t index, const RunResult& result) {
+    return json{{"index", index}, {"run", run_json(result)}}.dump(-1, ' ', false, json::error_handler_t::replace) + "\n";
+}
+
 RunRecords parse_run_records(const std::string& text, const std::string& name) {
     RunRecords found;
-    std::size_t at = 0;
-    while (at < text.size()) {
-        const std::size_t line_end = text.find('\n', at);
-        if (line_end == std::string::npos) break;
-        std::size_t index = 0, lengths[parts] = {};
-        if (!parse_header(text.substr(at, line_end - at), index, lengths)) break;
-        const std::size_t body = line_end + 1;
-        std::size_t remaining = text.size() - body, offsets[parts] = {};
-        bool fits = true;
-        for (int k = 0; k < parts && fits; ++k) {
-            fits = lengths[k] <= remaining;
-            remaining -= fits ? lengths[k] : 0;
-            if (k + 1 < parts) offsets[k + 1] = offsets[k] + lengths[k];
+    for (std::size_t at = 0; at < text.size();) {
+        const std::size_t end = text.find('\n', at);
+        if (end == std::string::npos) break;  // cut short
+        const json j = json::parse(text.begin() + static_cast<std::ptrdiff_t>(at), text.begin() + static_cast<std::ptrdiff_t>(end),
+                                   nullptr, false);
+        if (j.is_discarded() || !is_record(j)) break;
+        try {
+            found.runs.emplace_back(j.at("index").get<std::size_t>(), run_of(j.at("run")));
+        } catch (const json::exception& e) {
+            throw InputError(fmt::format("{}: the record of run {} is malformed: {}", name, j.at("index").get<std::size_t>(), e.what()));
+        } catch (const InputError& e) {
+            throw InputError(fmt::format("{}: the record of run {} is malformed: {}", name, j.at("index").get<std::size_t>(), e.what()));
         }
-        if (!fits) break;
-        const std::size_t end = body + offsets[parts - 1] + lengths[parts - 1];
-        const std::string trailer = fmt::format("end {}\n", index);
-        if (end + trailer.size() > text.size() || text.compare(end, trailer.size(), trailer) != 0) break;
-        const std::string results = text.substr(body, lengths[0]), runs = text.substr(body + offsets[1], lengths[1]);
-        auto parsed = parse_results(results, runs, {}, name);
-        if (parsed.size() != 1) throw InputError(name + ": a record that does not hold one run");
-        if (lengths[2] > 0 || lengths[3] > 0 || lengths[4] > 0) {  // again, with the pictures' files under the names the run gives them
-            const std::string series = text.substr(body + offsets[2], lengths[2]);
-            const auto header = parse_csv(series.substr(0, series.find('\n') + 1), name);
-            const bool energy = !header.empty() && RunResult::is_energy_series(header.front().fields);
-            std::map<std::string, std::string> files;
-            if (lengths[2] > 0) files["series/" + series_file_name(parsed.front().spec, energy)] = series;
-            if (lengths[3] > 0) files["snapshots/" + snapshot_file_name(parsed.front().spec)] = text.substr(body + offsets[3], lengths[3]);
-            if (lengths[4] > 0) files["walls/" + snapshot_file_name(parsed.front().spec)] = text.substr(body + offsets[4], lengths[4]);
-            parsed = parse_results(results, runs, files, name);
-        }
-        found.runs.emplace_back(index, std::move(parsed.front()));
-        at = end + trailer.size();
+        at = end + 1;
         found.whole_length = at;
     }
     return found;
+}
+
+std::string spec_record(const RunSpec& spec) { return spec_json(spec).dump(); }
+
+RunSpec parse_spec_record(const std::string& text, const std::string& name) {
+    const json j = json::parse(text, nullptr, false);
+    if (j.is_discarded()) throw InputError(name + ": not JSON");
+    try {
+        return spec_of(j);
+    } catch (const json::exception& e) {
+        throw InputError(fmt::format("{}: malformed: {}", name, e.what()));
+    }
 }
 
 }  // namespace rotbench

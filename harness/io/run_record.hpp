@@ -1,8 +1,11 @@
-// One finished run as a self-delimiting record: the form in which the journal keeps runs and
-// an isolated worker hands its run back.
-//   "run INDEX R N S P W\n", R bytes of its results.csv, N of its runs.csv, S of its series
-//   (0: none), P of its snapshots (0: none), W of its walls (0: none), "end INDEX\n".
-// A record cut short (a kill while it was written) is not a record.
+// The run store's record: one finished run, whole and lossless, as one line of JSON (JSON
+// Lines). It is the form in which the journal keeps runs and an isolated worker hands its run
+// back; every CSV of a run is an export of these records, never read back inside the run.
+//   {"index": I, "run": {"spec": {...}, "metrics": [[name, value], ...], "failure": "...",
+//    "series_columns": [...], "series": [[...], ...], "snapshots": [...], "walls": [...],
+//    "timing_samples": [...]}}
+// A number that is not finite is written as the string "nan", "inf" or "-inf" (JSON has none);
+// every other one in the shortest form that reads back to the same double. docs/outputs.md.
 #pragma once
 
 #include "harness/engine/run.hpp"
@@ -14,6 +17,7 @@
 
 namespace rotbench {
 
+// The record of run `index`, ending with its line break.
 std::string run_record(std::size_t index, const RunResult& result);
 
 struct RunRecords {
@@ -21,8 +25,14 @@ struct RunRecords {
     std::size_t whole_length = 0;                         // the bytes the whole records span
 };
 
-// The whole records at the start of `text`; reading stops at the first cut or foreign one.
-// A record whose CSVs are malformed is an InputError naming `name`.
+// The whole records at the start of `text`; reading stops at the first line that is cut (no
+// line break: a kill while it was written) or is not a record. A line that is JSON of the
+// record's shape but holds a wrong value (an unknown kind, a metric that is not a number) is
+// an InputError naming `name`.
 RunRecords parse_run_records(const std::string& text, const std::string& name);
+
+// A run's spec alone, as one line without a line break (the worker's --spec), and back.
+std::string spec_record(const RunSpec& spec);
+RunSpec parse_spec_record(const std::string& text, const std::string& name);
 
 }  // namespace rotbench

@@ -1,6 +1,6 @@
 // libFuzzer target: the readers of rotbench's own CSV files, which a user may hand back edited,
 // cut or forged (`report DIR`, `merge`, `gate --results`, `run --resume`): results.csv, runs.csv
-// and an energy series (the input's parts, split at form feeds), and the journal's records.
+// and an energy series (the input's parts, split at form feeds), and the run store's records (journal, worker).
 #include "harness/io/results_csv.hpp"
 #include "harness/io/run_record.hpp"
 #include "tests/fuzz/fuzz_input.hpp"
@@ -16,6 +16,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         begin = end + 1;
     }
     fuzz::parse_or_input_error([&] { parse_results(parts[0], parts[1], {{"series/energy_fibre_bounce_direct_dt1e-06.csv", parts[2]}}, "fuzz"); });
-    fuzz::parse_or_input_error([&] { parse_run_records(input, "fuzz/partial/runs"); });
+    fuzz::parse_or_input_error([&] { parse_run_records(input, "fuzz/partial/runs.jsonl"); });
     return 0;
 }
