@@ -156,14 +156,14 @@ TEST_CASE("bad input: config files that are malformed, have unknown keys or wron
 TEST_CASE("bad input: missing or unreadable input files and directories") {
     const fs::path dir = fresh_dir("bad_files");
     fs::create_directories(dir / "not_results");
-    write(dir / "not_results" / "runs.csv", "scene,scheme\n");
+    write(dir / "not_results" / "runs.jsonl", "scene,scheme\n");
     const std::string out = (dir / "out").string();
     check_rows(
         {
             {{"gate", (dir / "absent.toml").string()}, "absent.toml: cannot read the file"},
             {{"gate", dir.string()}, "not a regular file (a directory)"},
-            {{"report", (dir / "absent").string()}, "cannot read " + (dir / "absent" / "runs.csv").string()},
-            {{"report", (dir / "not_results").string()}, "runs.csv:1: expected the header 'scene,scheme,kind,dt,t_end,params,metrics,timing,failure'"},
+            {{"report", (dir / "absent").string()}, "cannot read " + (dir / "absent" / "runs.jsonl").string()},
+            {{"report", (dir / "not_results").string()}, "runs.jsonl: cut short or not a run store after 0 runs"},
             {{"merge", (dir / "absent").string(), "--out", out}, "cannot read " + (dir / "absent" / "shard.csv").string()},
             {{"list", "--plugin", (dir / "absent.so").string()}, "no such file"},
         },

@@ -3,6 +3,7 @@
 #include "harness/analysis/mann_whitney.hpp"
 #include "harness/gate/compare.hpp"
 #include "harness/io/csv.hpp"
+#include "harness/io/results_csv.hpp"
 #include "tests/cli_helpers.hpp"
 
 #include <catch2/catch.hpp>
@@ -124,15 +125,12 @@ TEST_CASE("rotbench compare: exit 0 on an identical rerun, 1 on a degraded one, 
     CHECK(same.status == 0);
     CHECK_THAT(read(dir / "cmp" / "compare.csv"), Catch::StartsWith("scene,scheme,kind,dt,metric,base,new,change\n"));
     CHECK_THAT(read(dir / "reports" / "compare.xml"), Catch::Contains("baseline_accuracy on dipole_top"));
-    // Degrade one error of b by half: a regression, named.
-    const std::string results = read(dir / "b" / "results.csv");
-    std::string degraded;
-    for (const auto& row : parse_csv(results, "b")) {
-        auto f = row.fields;
-        if (f[1] == "zvw" && f[2] == "0.005" && f[3] == "omega_err_max") f[4] = std::to_string(1.5 * std::stod(f[4]));
-        degraded += csv_record(f);
-    }
-    write(dir / "b" / "results.csv", degraded);
+    // Degrade one error of b by half in its run store: a regression, named.
+    std::vector<RunResult> degraded = read_results(dir / "b");
+    for (auto& r : degraded)
+        for (auto& [name, value] : r.metrics)
+            if (r.spec.scheme == "zvw" && r.spec.dt == 0.005 && name == "omega_err_max") value *= 1.5;
+    write(dir / "b" / "runs.jsonl", run_store(degraded));
     const Cli worse = cli({"compare", (dir / "a").string(), (dir / "b").string(), "--cost-tolerance", "100"});
     CHECK(worse.status == 1);
     CHECK_THAT(worse.out, Catch::Contains("FAIL dipole_top/zvw: zvw: baseline_accuracy on dipole_top: omega_err_max at dt = 0.005"));

@@ -3,6 +3,7 @@
 // with its file and line, never read as results.
 #include "harness/io/csv.hpp"
 #include "harness/io/results_csv.hpp"
+#include "harness/io/run_record.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -41,46 +42,48 @@ TEST_CASE("csv: malformed text is refused with the file and line") {
     CHECK(read_csv(std::string("a,b\n1,\"2,3\"\n"), "t.csv", "a,b").front().fields == std::vector<std::string>{"1", "2,3"});
 }
 
-TEST_CASE("run files: a run with any failure text and parameters round-trips through runs.csv and results.csv") {
+TEST_CASE("run files: runs with any failure text and parameters come back from the store, and its CSVs are exports of it") {
     RunResult r;
     r.spec = {"dipole_top", "direct", 0.01, 10.0, {{"field", {0.0, 0.0, 2.5}}, {"q0", {1.0, 0.0, 0.0, 0.0}}}, RunKind::trajectory};
     r.failure = "threw: a message, with \"quotes\"\nand a line break";
     r.metrics = {{"omega_err_max", 1.25e-3}, {"unstable", 1.0}};
     r.timing_samples = {0.5, 0.25};
-    RunResult twin = r;  // the same scene, scheme and dt: told apart by the order of the files
+    RunResult twin = r;  // the same scene, scheme and dt: told apart by their order
     twin.spec.t_end = 5.0;
     twin.failure.clear();
     twin.metrics = {{"omega_err_max", 2.5e-3}};
-    const auto back = parse_results(results_csv({r, twin}), runs_csv({r, twin}), {}, "dir");
+    const auto back = parse_run_store(run_store({r, twin}), "dir/runs.jsonl");
     REQUIRE(back.size() == 2);
-    CHECK(back[0].spec.params == r.spec.params);
+    CHECK(back[0].spec == r.spec);
     CHECK(back[0].failure == r.failure);
     CHECK(back[0].metrics == r.metrics);
     CHECK(back[0].timing_samples == r.timing_samples);
-    CHECK(back[1].spec.t_end == 5.0);
+    CHECK(back[1].spec == twin.spec);
     CHECK(back[1].metrics == twin.metrics);
+    CHECK(results_csv(back) == results_csv({r, twin}));
+    CHECK(runs_csv(back) == runs_csv({r, twin}));
 }
 
-TEST_CASE("run files: truncated, header-only and mistyped files are refused with file and line") {
+TEST_CASE("run files: a cut, empty, reordered or forged store is refused with the file and the run") {
     RunResult r;
     r.spec = {"dipole_top", "direct", 0.01, 10.0, {}, RunKind::trajectory};
     r.metrics = {{"omega_err_max", 1.25e-3}, {"unstable", 0.0}};
-    const std::string results = results_csv({r}), runs = runs_csv({r});
-    const auto refused = [&](const std::string& res, const std::string& run) { return error_of([&] { parse_results(res, run, {}, "d"); }); };
-    CHECK_THAT(refused(results, runs.substr(0, runs.find('\n') + 1)), Catch::Contains("d/runs.csv: no run in the file"));
-    CHECK_THAT(refused(results.substr(0, results.size() - 10), runs), Catch::Contains("d/results.csv:3: the file ends in the middle"));
-    CHECK_THAT(refused(results.substr(0, results.rfind("dipole_top")), runs), Catch::Contains("d/results.csv: ends before the metrics of run 1"));
-    CHECK_THAT(refused(results + "dipole_top,direct,0.01,extra,1\n", runs), Catch::Contains("d/results.csv:4: a row that no run"));
-    std::string wrong_value = results;
-    wrong_value.replace(wrong_value.find("0.00125"), 7, "lots");
-    CHECK_THAT(refused(wrong_value, runs), Catch::Contains("d/results.csv:2: 'lots' is not a number"));
-    std::string wrong_kind = runs;
+    const std::string store = run_store({r, r});
+    const auto refused = [&](const std::string& text) { return error_of([&] { parse_run_store(text, "d/runs.jsonl"); }); };
+    CHECK_THAT(refused(""), Catch::Contains("d/runs.jsonl: no run in the store"));
+    CHECK_THAT(refused(store.substr(0, store.size() - 10)), Catch::Contains("d/runs.jsonl: cut short or not a run store after 1 runs"));
+    CHECK_THAT(refused(store + "scene,scheme\n"), Catch::Contains("cut short or not a run store after 2 runs"));
+    CHECK_THAT(refused(run_record(1, r)), Catch::Contains("d/runs.jsonl: run 1 where run 0 is due"));
+    std::string wrong_value = store;
+    wrong_value.replace(wrong_value.find("0.00125"), 7, "\"lots\"");
+    CHECK_THAT(refused(wrong_value), Catch::Contains("the record of run 0 is malformed: not a number: \"lots\""));
+    std::string wrong_kind = store;
     wrong_kind.replace(wrong_kind.find("trajectory"), 10, "sideways");
-    CHECK_THAT(refused(results, wrong_kind), Catch::Contains("unknown run kind 'sideways'"));
-    std::string wrong_count = runs;
-    wrong_count.replace(wrong_count.find(",2,"), 3, ",x,");
-    CHECK_THAT(refused(results, wrong_count), Catch::Contains("d/runs.csv:2: 'metrics' is not a count"));
-    std::string other_run = results;
-    other_run.replace(other_run.find("direct"), 6, "zvw000");
-    CHECK_THAT(refused(other_run, runs), Catch::Contains("d/results.csv:2: a row of another run"));
+    CHECK_THAT(refused(wrong_kind), Catch::Contains("unknown run kind 'sideways'"));
+    std::string not_an_id = store;
+    not_an_id.replace(not_an_id.find("dipole_top"), 10, "dipole top");
+    CHECK_THAT(refused(not_an_id), Catch::Contains("d/runs.jsonl: run 0: a scene or scheme id that is not one"));
+    std::string negative_dt = store;
+    negative_dt.replace(negative_dt.find("\"dt\":0.01"), 9, "\"dt\":-0.01");
+    CHECK_THAT(refused(negative_dt), Catch::Contains("dt or t_end out of range"));
 }

@@ -112,7 +112,7 @@ TEST_CASE("hostile inputs: a forged shard.csv is refused before anything is size
              {2, "99999999999", "cannot hold"},
              {2, "999", "a slice of another sweep (plan"},  // its other rows say 2
              {1, "0", "cannot hold"},
-             {4, "99999999999", "does not match runs.csv"},
+             {4, "99999999999", "does not match runs.jsonl"},
          }) {
         const auto args = forged(field, value);
         const Cli r = cli(args);

@@ -72,7 +72,7 @@ TEST_CASE("outputs: a gate never replaces a finished run's results, and another 
     write(dir / "g.toml", "[[check]]\nscene = \"dipole_top\"\nschemes = [\"direct\"]\nmax_error = 1\ndt = 0.01\n");
     const Cli gate = cli({"gate", (dir / "g.toml").string(), "--out", dir.string(), "--overwrite"});
     CHECK(gate.status == 2);
-    CHECK_THAT(gate.err, Catch::Contains("results.csv was written by rotbench run; it is not replaced by gate"));
+    CHECK_THAT(gate.err, Catch::Contains("runs.jsonl was written by rotbench run; it is not replaced by gate"));
     CHECK(read(dir / "results.csv") == results);
     // The stability study writes other files: beside the run's, which stay as they were.
     REQUIRE(cli({"stability", "--scenes", "sphere_pair", "--schemes", "direct", "--zeta", "0", "--out", dir.string()}).status == 0);

@@ -45,7 +45,7 @@ public:
         command.add_option("FILE", file_, "gate file (TOML: [claims], [[check]], [[expected_failure]])")->required();
         command.add_option("--junit", junit_, "write JUnit XML here, and summary.json beside it");
         command.add_option("--summary", summary_, "write the Markdown summary here (also appended to $GITHUB_STEP_SUMMARY)");
-        command.add_option("--out", out_, "write gate.csv, summary.json and the runs' results.csv and runs.csv here (and the journal)");
+        command.add_option("--out", out_, "write gate.csv, summary.json and the runs' store, results.csv and runs.csv here (and the journal)");
         command.add_option("--results", results_, "DIR: judge the runs in DIR (e.g. merged shards) instead of running them");
         command.add_option("--baseline", baseline_, "DIR: also fail on regressions against the runs in DIR (as rotbench compare)");
         command.add_option("--shard", shard_, "K/N: run only the K-th of N slices of the gate's runs (judge the merge with --results)");
@@ -72,7 +72,7 @@ public:
         std::optional<OutputDir> dir;
         if (how.resuming || !out_.empty())
             dir = OutputDir::open(how.resuming ? *how.resuming : fs::path(out_),
-                                  {"gate", "gate.csv", slice.shard ? slice_files : std::vector<std::string>{"gate.csv", "summary.json", "results.csv", "runs.csv"},
+                                  {"gate", "gate.csv", slice.shard ? slice_files : std::vector<std::string>{"gate.csv", "summary.json", "runs.jsonl", "results.csv", "runs.csv"},
                                    overwrite_, how.resuming.has_value()});
 
         const std::vector<RunResult> baseline = baseline_.empty() ? std::vector<RunResult>{} : read_results(baseline_);
@@ -118,8 +118,7 @@ public:
         if (dir) {
             dir->write("gate.csv", gate_csv(result));
             dir->write("summary.json", json);
-            dir->write("results.csv", results_csv(result.runs));
-            dir->write("runs.csv", runs_csv(result.runs));
+            write_run_files(*dir, result.runs);
             Journal::discard(dir->path());
         }
         return result.passed() ? 0 : 1;

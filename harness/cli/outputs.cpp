@@ -50,8 +50,7 @@ void write_outputs(const OutputDir& dir, const std::vector<RunResult>& all_runs,
     // An ensemble's members go to ensemble.csv; the other files hold their means and intervals.
     if (const std::string members = ensemble_csv(all_runs); !members.empty()) dir.write("ensemble.csv", members);
     const std::vector<RunResult> results = collapse_ensembles(all_runs);
-    dir.write("results.csv", results_csv(results));
-    dir.write("runs.csv", runs_csv(results));
+    write_run_files(dir, results);
     const auto orders = observed_orders(results);
     dir.write("orders.csv", orders_csv(orders));
     dir.write("local_orders.csv", local_orders_csv(orders));

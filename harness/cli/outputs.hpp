@@ -19,7 +19,7 @@ namespace rotbench {
 inline constexpr int max_jobs = 1024, max_series_samples = 1000000;
 
 // The files `rotbench run` writes whose names are known before it starts.
-inline const std::vector<std::string> run_files = {"results.csv", "runs.csv", "orders.csv", "local_orders.csv", "answer.csv",
+inline const std::vector<std::string> run_files = {"runs.jsonl", "results.csv", "runs.csv", "orders.csv", "local_orders.csv", "answer.csv",
                                                    "ensemble.csv", "report.md"};
 
 // The report's plots drawn on every core.

@@ -1,4 +1,4 @@
-// `rotbench report DIR`: report.md and its plots again, from the CSVs a run left in DIR.
+// `rotbench report DIR`: report.md and its plots again, from the run store a run left in DIR.
 #include "harness/analysis/result_set.hpp"
 #include "harness/cli/outputs.hpp"
 #include "harness/cli/verb.hpp"
@@ -39,7 +39,7 @@ private:
     bool overwrite_ = false;
 };
 
-const RegisterVerb<ReportVerb> registration("report", "re-render report.md and its plots from the CSVs in DIR");
+const RegisterVerb<ReportVerb> registration("report", "re-render report.md and its plots from the run store in DIR");
 
 }  // namespace
 }  // namespace rotbench

@@ -130,8 +130,7 @@ SweepOutcome sweep_plan(const PlanSlice& slice, const OutputDir* dir, const Invo
 }
 
 void write_slice(const OutputDir& dir, const PlanSlice& slice, const std::vector<RunResult>& results, std::ostream& out) {
-    dir.write("results.csv", results_csv(results));
-    dir.write("runs.csv", runs_csv(results));
+    write_run_files(dir, results);
     write_run_series(results, dir);
     dir.write("shard.csv", shard_csv(slice.plan_id, slice.shard->index, slice.shard->count, results, slice.indices, slice.plan_size));
     out << fmt::format("wrote shard {}/{} ({} of {} runs) to {}; combine the shards with rotbench merge\n", slice.shard->index,

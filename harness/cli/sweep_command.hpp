@@ -49,7 +49,7 @@ SweepOutcome sweep_plan(const PlanSlice& slice, const OutputDir* dir, const Invo
                         bool timed_alone, bool quiet = false);
 
 // A slice's files for `rotbench merge`: results.csv, runs.csv, the energy series, shard.csv.
-inline const std::vector<std::string> slice_files = {"results.csv", "runs.csv", "shard.csv"};
+inline const std::vector<std::string> slice_files = {"runs.jsonl", "results.csv", "runs.csv", "shard.csv"};
 void write_slice(const OutputDir& dir, const PlanSlice& slice, const std::vector<RunResult>& results, std::ostream& out);
 
 

@@ -70,7 +70,7 @@ std::vector<RunResult> merge_shards(const std::vector<std::filesystem::path>& di
         const auto rows = read_csv(dir / "shard.csv", "plan_id,shard,shards,plan_size,plan_index,scene,scheme,dt");
         const auto results = read_results(dir);
         if (rows.size() != results.size())
-            throw InputError(name + ": lists " + std::to_string(rows.size()) + " runs, runs.csv " +
+            throw InputError(name + ": lists " + std::to_string(rows.size()) + " runs, runs.jsonl " +
                              std::to_string(results.size()));
         for (std::size_t i = 0; i < rows.size(); ++i) {
             const auto& f = rows[i];
@@ -104,7 +104,7 @@ std::vector<RunResult> merge_shards(const std::vector<std::filesystem::path>& di
             }
             const RunResult& r = results[i];
             if (index >= plan_size || merged.count(index) || r.spec.scene != f[5] || r.spec.scheme != f[6])
-                throw InputError(name + ": row " + std::to_string(i + 2) + " does not match runs.csv");
+                throw InputError(name + ": row " + std::to_string(i + 2) + " does not match runs.jsonl");
             merged[index] = r;
         }
     }
