@@ -274,28 +274,22 @@ std::string markdown_report(const ResultSet& set, const std::string& command_lin
     md += granular_section(set, dir);
     md += energy_series_section(set, dir, executor);
     schemes_section(md, set, expected);
-    md += "## Metrics and the order fit\n\n"
-          "- `omega_rms_x/y/z`: root mean square over all steps of the body-frame angular-velocity error "
-          "(each solution in its own body frame), the seed's Table 1 quantity.\n"
-          "- `omega_err_max`: max |w - w_ref| in the world frame. `orientation_err_max`: max rotation angle "
-          "between q and q_ref.\n"
-          "- `energy_drift_max`: max |E - E0|/|E0|; `energy_drift_rate`: slope (1/s) of the least-squares line "
-          "through its running maximum, the secular drift. `momentum_drift_max`: max |L - L0|/|L0| (torque-free "
-          "scenes). `quat_norm_err_max`: max ||q| - 1| (round-off only in the schemes that normalise q or keep it unit).\n"
-          "- `cpu_seconds` (median), `cpu_seconds_min`, `cpu_seconds_max` over `timing_repeats` timing runs made right "
-          "after the metrics run (their warm-up), on the per-thread CPU clock, without the metrics and the reference. A run of more than " +
-          std::to_string(timing_sample_steps) + " steps is timed on 32 evenly spaced stretches of its own trajectory "
-          "(`timed_steps` steps in all, each started from a state the metrics run kept) and scaled to its length; `ns_per_step` = `cpu_seconds` / `steps`.\n"
-          "- `unstable`: 1 when the state became NaN/Inf, the energy error of a conservative scene passed 1e6 "
-          "times the initial energy, or the scheme threw; the run stops there and its error metrics are NaN.\n"
-          "- Observed order (`orders.csv`; local orders between successive steps in `local_orders.csv`): "
-          "least-squares slope of log error against log dt with a 95 % Student-t interval, over the asymptotic "
-          "range only. Failed runs and errors below 1e-13 are dropped, and so are the steps coarser than the "
-          "one of largest error (a saturated error); from that step, the first "
-          "error not below 0.9 times the previous one starts a round-off plateau, dropped with every finer "
-          "step; the range is then the longest run ending at the finest step whose local orders lie within "
-          "0.3 of their median. Fewer than 3 points: \"insufficient\"; round-off only: \"exact\"; an error that does not halve "
-          "over a 4x range of dt: \"no_convergence\" (`orders.csv`'s `status`).\n";
+    md += "## Metrics and the order fit\n\n";
+    for (const auto& m : metric_table())
+        if (!m.meaning.empty()) md += fmt::format("- `{}`{}: {}.\n", m.name, m.unit.empty() ? "" : fmt::format(" ({})", m.unit), m.meaning);
+    md += fmt::format(
+        "- Timing: `cpu_seconds` (median), `cpu_seconds_min`, `cpu_seconds_max` over `timing_repeats` timing runs made right after "
+        "the metrics run (their warm-up), on the per-thread CPU clock. A run of more than {} steps is timed on 32 evenly spaced "
+        "stretches of its own trajectory (`timed_steps` steps in all, each started from a state the metrics run kept) and scaled "
+        "to its length. An energy that leaves {:g} times the initial energy scale counts as a blow-up.\n"
+        "- Observed order (`orders.csv`; local orders between successive steps in `local_orders.csv`): least-squares slope of log "
+        "error against log dt with a 95 % Student-t interval, over the asymptotic range only. Failed runs and errors below {:g} "
+        "are dropped, and so are the steps coarser than the one of largest error (a saturated error); from that step, the first "
+        "error not below {:g} times the previous one starts a round-off plateau, dropped with every finer step; the range is then "
+        "the longest run ending at the finest step whose local orders lie within {:g} of their median. Fewer than {} points: "
+        "\"insufficient\"; round-off only: \"exact\"; an error that does not halve over a 4x range of dt: \"no_convergence\" "
+        "(`orders.csv`'s `status`).\n",
+        timing_sample_steps, blowup_energy_factor, order_floor, plateau_ratio, asymptotic_spread, min_fit_points);
     return md;
 }
 

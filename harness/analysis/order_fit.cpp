@@ -14,7 +14,7 @@ OrderFit fit_order(std::vector<OrderPoint> points, double floor) {
     points.erase(points.begin(), std::max_element(points.begin(), points.end(),
                                                   [](const OrderPoint& a, const OrderPoint& b) { return a.error < b.error; }));
     for (std::size_t i = 1; i < points.size(); ++i)
-        if (!(points[i].error < 0.9 * points[i - 1].error)) {
+        if (!(points[i].error < plateau_ratio * points[i - 1].error)) {
             points.resize(i);
             break;
         }
@@ -24,7 +24,7 @@ OrderFit fit_order(std::vector<OrderPoint> points, double floor) {
         return std::log(points[i - 1].error / points[i].error) / std::log(points[i - 1].dt / points[i].dt);
     };
     for (std::size_t i = 1; i < points.size(); ++i) fit.local_orders.push_back({points[i - 1].dt, points[i].dt, local(i)});
-    if (points.size() < 3) {
+    if (points.size() < static_cast<std::size_t>(min_fit_points)) {
         fit.points = static_cast<int>(points.size());
         return fit;
     }
@@ -35,7 +35,7 @@ OrderFit fit_order(std::vector<OrderPoint> points, double floor) {
         std::vector<double> sorted = orders;
         std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
         const double median = sorted[sorted.size() / 2];
-        if (std::all_of(orders.begin(), orders.end(), [&](double p) { return std::abs(p - median) <= 0.3; })) {
+        if (std::all_of(orders.begin(), orders.end(), [&](double p) { return std::abs(p - median) <= asymptotic_spread; })) {
             first = s;
             break;
         }
@@ -44,7 +44,7 @@ OrderFit fit_order(std::vector<OrderPoint> points, double floor) {
     fit.points = static_cast<int>(n);
     fit.dt_max = points[first].dt;
     fit.dt_min = points.back().dt;
-    if (n < 3) return fit;
+    if (n < static_cast<std::size_t>(min_fit_points)) return fit;
 
     double sx = 0, sy = 0;
     for (std::size_t i = first; i < points.size(); ++i) {

@@ -36,7 +36,11 @@ struct OrderFit {
     std::vector<Local> local_orders;
 };
 
+// The rule's numbers, which the report prints from here.
 inline constexpr double order_floor = 1e-13;
+inline constexpr double plateau_ratio = 0.9;      // rule 2
+inline constexpr double asymptotic_spread = 0.3;  // rule 3
+inline constexpr int min_fit_points = 3;          // rule 4
 
 OrderFit fit_order(std::vector<OrderPoint> points, double floor = order_floor);
 

@@ -81,6 +81,7 @@ struct MetricInfo {
     bool in_scene_table = false;  // a column of the report's per-scene tables
     bool integer = false;         // printed without decimals
     std::string_view label = {};  // a plot's axis, when it is plotted
+    std::string_view meaning = {};  // one line for the report (docs/outputs.md says more)
 };
 
 // Every metric, in the order of the report's per-scene tables.
