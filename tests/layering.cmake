@@ -1,10 +1,17 @@
 # Run by CTest (tests/CMakeLists.txt): builds each layering probe, TARGET=LAYER=HEADER. A probe
 # whose header belongs to a layer above LAYER must fail, and because that header is not found;
 # one whose header is below must build.
-set(order schemes references harness reports cli)
+set(order schemes references scenes core harness reports cli)
 function(rank header out)
   if(header MATCHES "^harness/cli/")
-    set(${out} 4 PARENT_SCOPE)
+    list(FIND order cli r)
+    set(${out} ${r} PARENT_SCOPE)
+  elseif(header MATCHES "^harness/(scenes|granular)/")
+    list(FIND order scenes r)
+    set(${out} ${r} PARENT_SCOPE)
+  elseif(header MATCHES "^harness/core/")
+    list(FIND order core r)
+    set(${out} ${r} PARENT_SCOPE)
   else()
     string(REGEX MATCH "^[a-z]+" folder "${header}")
     list(FIND order ${folder} r)
