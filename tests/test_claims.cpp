@@ -71,7 +71,8 @@ TEST_CASE("claims: a scheme that claims nothing must converge at order 0.8 at le
 TEST_CASE("claims: exact means every error within 10 eps per step times |w_ref|, and more fails") {
     // 100 steps, |w_ref| = 2: the bound is 2000 eps = 4.4e-13.
     const auto exact = [](double error) {
-        return run(0.01, {{metric::omega_err_max, error}, {metric::orientation_err_max, 0.0}, {metric::steps, 100}, {metric::omega_ref_max, 2}});
+        return run(0.01,
+                   {{metric::omega_err_max, error}, {metric::orientation_err_max, 0.0}, {metric::steps, 100}, {metric::omega_ref_max, 2}});
     };
     const RunResult round_off = exact(1e-13), more = exact(1e-12);
     CHECK(judge_exact({&round_off}).passed);
@@ -123,12 +124,13 @@ TEST_CASE("claims: the gate fails each claim the judge fails, with the judge's m
         plan.cases.push_back({id, "claim", id, "dipole_top", "direct", {runs.size()}, std::numeric_limits<std::size_t>::max(), order});
         runs.push_back(std::move(r));
     };
-    add_case("exact_without_torque", run(0.01, {{metric::omega_err_max, 1e-6}, {metric::orientation_err_max, 0}, {metric::steps, 100},
-                                                {metric::omega_ref_max, 1}}));
+    add_case(
+        "exact_without_torque",
+        run(0.01, {{metric::omega_err_max, 1e-6}, {metric::orientation_err_max, 0}, {metric::steps, 100}, {metric::omega_ref_max, 1}}));
     add_case("conserves_momentum", run(0.01, {{metric::momentum_drift_max, 1e-9}, {metric::steps, 100}}));
     add_case("bounded_energy", horizon(1.0));
-    add_case("time_reversible", run(0.01, {{metric::reversal_angle, 1e-6}, {metric::reversal_omega, 0}, {metric::steps, 100}},
-                                    RunKind::reversal));
+    add_case("time_reversible",
+             run(0.01, {{metric::reversal_angle, 1e-6}, {metric::reversal_omega, 0}, {metric::steps, 100}}, RunKind::reversal));
     add_case("sanity_momentum", run(0.01, {{metric::momentum_drift_max, 0.2}}));
     const GateResult result = judge_gate({}, plan, runs);
     REQUIRE(result.verdicts.size() == 5);

@@ -11,9 +11,9 @@ using namespace rotbench;
 
 TEST_CASE("every metric that a trajectory, reversal or stability run records is in the metric table") {
     std::set<std::string> recorded;
-    for (const RunSpec& spec : {RunSpec{"asymmetric_free", "direct", 0.05}, RunSpec{"dipole_top", "cayley", 0.05},
-                                RunSpec{"fibre_bounce", "zvw", 1e-6, 1e-4}, RunSpec{"dipole_top", "omelyan", 0.05, 0, {}, RunKind::reversal},
-                                RunSpec{"sphere_pair", "direct", 0, 0, {}, RunKind::stability}})
+    for (const RunSpec& spec :
+         {RunSpec{"asymmetric_free", "direct", 0.05}, RunSpec{"dipole_top", "cayley", 0.05}, RunSpec{"fibre_bounce", "zvw", 1e-6, 1e-4},
+          RunSpec{"dipole_top", "omelyan", 0.05, 0, {}, RunKind::reversal}, RunSpec{"sphere_pair", "direct", 0, 0, {}, RunKind::stability}})
         for (const auto& [name, value] : run_one(spec).metrics) recorded.insert(name);
     REQUIRE(recorded.size() > 20);
     for (const auto& name : recorded) {

@@ -58,9 +58,10 @@ Judgement bounded_energy(double early, double late, const std::string& where) {
     j.bound = energy_growth_bound;
     j.measured = early > 0.0 ? late / early : (late > 0.0 ? INFINITY : 1.0);
     j.passed = j.measured <= j.bound;
-    j.message = fmt::format("the largest energy error grew {:.3g}x {} ({} to {}); bound sqrt({:g}) = {:.2f} (a linear drift grows "
-                            "it {:g}x, a bounded error about 1x)",
-                            j.measured, where, g(early), g(late), energy_horizon, j.bound, energy_horizon);
+    j.message = fmt::format(
+        "the largest energy error grew {:.3g}x {} ({} to {}); bound sqrt({:g}) = {:.2f} (a linear drift grows "
+        "it {:g}x, a bounded error about 1x)",
+        j.measured, where, g(early), g(late), energy_horizon, j.bound, energy_horizon);
     return j;
 }
 
@@ -74,9 +75,7 @@ bool judged_with_torque(const SceneInfo& scene) {
     return scene.reference != Scene::ReferenceKind::none && scene.torque_depends_on_orientation;
 }
 
-bool judges_energy(const SceneInfo& scene) {
-    return scene.conserves_energy && (judged_without_torque(scene) || judged_with_torque(scene));
-}
+bool judges_energy(const SceneInfo& scene) { return scene.conserves_energy && (judged_without_torque(scene) || judged_with_torque(scene)); }
 
 RunSpec horizon_run(const RunSpec& coarsest) {
     RunSpec spec = coarsest;
@@ -98,9 +97,10 @@ Judgement judge_order(const RunRefs& ladder, int claimed) {
     const auto points = points_of(ladder);
     const OrderFit fit = fit_order(points);
     if (!fit.sufficient) {
-        j.message = fmt::format("no order could be fitted (errors {} from dt {} to {}: fewer than 3 points in an asymptotic range); "
-                                "claimed order {}",
-                                errors_text(points), g(points.front().dt), g(points.back().dt), claimed);
+        j.message = fmt::format(
+            "no order could be fitted (errors {} from dt {} to {}: fewer than 3 points in an asymptotic range); "
+            "claimed order {}",
+            errors_text(points), g(points.front().dt), g(points.back().dt), claimed);
         return j;
     }
     double spread = 0;
@@ -130,9 +130,10 @@ Judgement judge_sanity_order(const RunRefs& ladder) {
     if (fit.sufficient) {
         j.measured = fit.order, j.lo = fit.order_lo, j.hi = fit.order_hi;
         j.passed = fit.order >= sanity_min_order;
-        j.message = fmt::format("observed order {:.2f} [{:.2f}, {:.2f}] over dt {} ... {}, required at least {} (a consistent scheme "
-                                "converges)",
-                                fit.order, fit.order_lo, fit.order_hi, g(fit.dt_max), g(fit.dt_min), sanity_min_order);
+        j.message = fmt::format(
+            "observed order {:.2f} [{:.2f}, {:.2f}] over dt {} ... {}, required at least {} (a consistent scheme "
+            "converges)",
+            fit.order, fit.order_lo, fit.order_hi, g(fit.dt_max), g(fit.dt_min), sanity_min_order);
         return j;
     }
     j.message = fmt::format("{} does not fall as a power of dt (errors {} from dt {} to {}), required an order of at least {}",
@@ -143,10 +144,10 @@ Judgement judge_sanity_order(const RunRefs& ladder) {
 Judgement judge_exact(const RunRefs& runs) {
     auto [j, run] = within_round_off(runs, {metric::omega_err_max, metric::orientation_err_max});
     if (run)
-        j.message = fmt::format("error {} at dt = {} against the round-off bound {} (N = {} steps x 10 eps, times |w_ref| for the "
-                                "angular velocity): {}",
-                                g(j.measured), g(run->spec.dt), g(j.bound), run->value(metric::steps),
-                                j.passed ? "round-off only" : "more than round-off");
+        j.message = fmt::format(
+            "error {} at dt = {} against the round-off bound {} (N = {} steps x 10 eps, times |w_ref| for the "
+            "angular velocity): {}",
+            g(j.measured), g(run->spec.dt), g(j.bound), run->value(metric::steps), j.passed ? "round-off only" : "more than round-off");
     return j;
 }
 
@@ -167,9 +168,10 @@ Judgement judge_sanity_momentum(const RunResult& run) {
     }
     j.measured = run.value(metric::momentum_drift_max);
     j.passed = j.measured <= j.bound;
-    j.message = fmt::format("momentum drift {} at dt = {}, required at most {:g} % (a scheme that does not let w' precess loses far "
-                            "more)",
-                            g(j.measured), g(run.spec.dt), 100 * sanity_max_momentum_drift);
+    j.message = fmt::format(
+        "momentum drift {} at dt = {}, required at most {:g} % (a scheme that does not let w' precess loses far "
+        "more)",
+        g(j.measured), g(run.spec.dt), 100 * sanity_max_momentum_drift);
     return j;
 }
 
@@ -180,8 +182,9 @@ Judgement judge_bounded_energy(const RunResult& run) {
         j.message = fmt::format("the run at dt = {} failed: {}", g(run.spec.dt), run.failure);
         return j;
     }
-    return bounded_energy(run.value(metric::energy_drift_first), run.value(metric::energy_drift_horizon),
-                          fmt::format("from {} s to {} s at dt = {}", g(run.spec.t_end), g(energy_horizon * run.spec.t_end), g(run.spec.dt)));
+    return bounded_energy(
+        run.value(metric::energy_drift_first), run.value(metric::energy_drift_horizon),
+        fmt::format("from {} s to {} s at dt = {}", g(run.spec.t_end), g(energy_horizon * run.spec.t_end), g(run.spec.dt)));
 }
 
 Judgement judge_reversal(const RunResult& run) {
@@ -194,9 +197,10 @@ Judgement judge_reversal(const RunResult& run) {
     j.bound = 2.0 * n * 4.0 * unit_round_off;
     j.measured = std::max(run.value(metric::reversal_angle), run.value(metric::reversal_omega));
     j.passed = j.measured <= j.bound;
-    j.message = fmt::format("after {} steps forward and {} back with -dt = {}, {} rad and {} (relative) from the start; bound 2 N x 4 "
-                            "eps = {}",
-                            n, n, g(run.spec.dt), g(run.value(metric::reversal_angle)), g(run.value(metric::reversal_omega)), g(j.bound));
+    j.message = fmt::format(
+        "after {} steps forward and {} back with -dt = {}, {} rad and {} (relative) from the start; bound 2 N x 4 "
+        "eps = {}",
+        n, n, g(run.spec.dt), g(run.value(metric::reversal_angle)), g(run.value(metric::reversal_omega)), g(j.bound));
     return j;
 }
 

@@ -77,10 +77,10 @@ struct MetricInfo {
     std::string_view name, unit;
     MetricKind kind;
     RoundOff round_off = RoundOff::none;
-    int fit_rank = 0;            // > 0: its order is fitted (orders.csv), in this order
-    bool in_scene_table = false;  // a column of the report's per-scene tables
-    bool integer = false;         // printed without decimals
-    std::string_view label = {};  // a plot's axis, when it is plotted
+    int fit_rank = 0;               // > 0: its order is fitted (orders.csv), in this order
+    bool in_scene_table = false;    // a column of the report's per-scene tables
+    bool integer = false;           // printed without decimals
+    std::string_view label = {};    // a plot's axis, when it is plotted
     std::string_view meaning = {};  // one line for the report (docs/outputs.md says more)
 };
 

@@ -50,8 +50,8 @@ std::vector<std::vector<double>> rows_of(const json& j) {
 json spec_json(const RunSpec& s) {
     json params = json::array();
     for (const auto& [key, values] : s.params) params.push_back({key, numbers(values)});
-    return {{"scene", s.scene},   {"scheme", s.scheme},   {"kind", kind_name(s.kind)}, {"dt", number(s.dt)},
-            {"t_end", number(s.t_end)}, {"params", params}, {"timed", s.timed}};
+    return {{"scene", s.scene},         {"scheme", s.scheme}, {"kind", kind_name(s.kind)}, {"dt", number(s.dt)},
+            {"t_end", number(s.t_end)}, {"params", params},   {"timed", s.timed}};
 }
 
 RunSpec spec_of(const json& j) {
@@ -69,9 +69,10 @@ RunSpec spec_of(const json& j) {
 json run_json(const RunResult& r) {
     json metrics = json::array();
     for (const auto& [name, value] : r.metrics) metrics.push_back({name, number(value)});
-    return {{"spec", spec_json(r.spec)},         {"metrics", metrics},           {"failure", r.failure},
-            {"series_columns", r.series_columns}, {"series", rows(r.series)},     {"snapshots", rows(r.snapshots)},
-            {"walls", rows(r.walls)},             {"timing_samples", numbers(r.timing_samples)}};
+    return {{"spec", spec_json(r.spec)}, {"metrics", metrics},
+            {"failure", r.failure},      {"series_columns", r.series_columns},
+            {"series", rows(r.series)},  {"snapshots", rows(r.snapshots)},
+            {"walls", rows(r.walls)},    {"timing_samples", numbers(r.timing_samples)}};
 }
 
 RunResult run_of(const json& j) {
@@ -101,8 +102,8 @@ RunRecords parse_run_records(const std::string& text, const std::string& name) {
     for (std::size_t at = 0; at < text.size();) {
         const std::size_t end = text.find('\n', at);
         if (end == std::string::npos) break;  // cut short
-        const json j = json::parse(text.begin() + static_cast<std::ptrdiff_t>(at), text.begin() + static_cast<std::ptrdiff_t>(end),
-                                   nullptr, false);
+        const json j =
+            json::parse(text.begin() + static_cast<std::ptrdiff_t>(at), text.begin() + static_cast<std::ptrdiff_t>(end), nullptr, false);
         if (j.is_discarded() || !is_record(j)) break;
         try {
             found.runs.emplace_back(j.at("index").get<std::size_t>(), run_of(j.at("run")));
