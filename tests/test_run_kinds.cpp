@@ -37,7 +37,7 @@ TEST_CASE("a stability-search run gives the limit the stability analysis finds")
     const auto scene = make_scene("sphere_pair", {{"zeta", {0.3}}});
     const auto& probe = dynamic_cast<const StabilityProbe&>(*scene);
     const double limit = empirical_limit(*scene, "direct", probe.predicted_limit(),
-                                         {stability_horizon_periods * probe.period(), stability_growth});
+                                         stability_criterion(probe));
     CHECK(r.value("dt_empirical") == limit);
     CHECK(r.value("dt_peng") == probe.predicted_limit());
     CHECK(r.value("stability_ratio") == limit / probe.predicted_limit());

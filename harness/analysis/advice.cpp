@@ -39,7 +39,7 @@ Outcome advise_one(const Scene& scene, const ParamOverrides& params, double t_en
     const IsolationLimits limits{0, isolation_memory(jobs)};
     double limit = NAN;
     if (!in_worker) {
-        const StabilityCriterion criterion{stability_horizon_periods * probe.period(), stability_growth};
+        const StabilityCriterion criterion = stability_criterion(probe);
         limit = empirical_limit(scene, scheme, probe.predicted_limit(), criterion);
     } else {
         const RunResult search = run_isolated({scene_id, scheme, 0.0, t_end, params, RunKind::stability, false}, {}, limits);

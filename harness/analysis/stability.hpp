@@ -23,6 +23,14 @@ struct StabilityCriterion {
     double growth = 100.0;  // energy factor
 };
 
+// The criterion of every stability measurement (the study, the runs of kind stability,
+// advice): energy growth by 1e6 within 1000 periods of the scene's fastest mode.
+inline constexpr double stability_horizon_periods = 1000.0;
+inline constexpr double stability_growth = 1e6;
+inline StabilityCriterion stability_criterion(const StabilityProbe& probe) {
+    return {stability_horizon_periods * probe.period(), stability_growth};
+}
+
 // One run of `steps` = horizon/dt steps from the scene's initial state.
 bool unstable_at(const Scene& scene, const std::string& scheme, double dt, const StabilityCriterion& c);
 

@@ -118,7 +118,7 @@ std::vector<StabilityRow> stability_study(const std::vector<std::string>& scenes
 void measure_stability_case(StabilityRow& r) {
     const auto scene = make_scene(r.scene, overrides(r));
     const auto& probe = dynamic_cast<const StabilityProbe&>(*scene);
-    const StabilityCriterion c{stability_horizon_periods * probe.period(), stability_growth};
+    const StabilityCriterion c = stability_criterion(probe);
     predicted_limits(r, *scene);
     r.dt_empirical = empirical_limit(*scene, r.scheme, r.dt_peng, c);
     if (probe.linearisable_at_rest()) {

@@ -2,6 +2,7 @@
 // ratio; the measured limit, the eigenvalue limit and Peng et al.'s prediction.
 #pragma once
 
+#include "harness/analysis/stability.hpp"
 #include "harness/io/progress.hpp"
 
 #include <cstddef>
@@ -27,10 +28,6 @@ struct StabilityRow {
 //   none   no limit found up to 2^30 times the first guess;
 //   failed the case did not finish (StabilityRow::failure).
 std::string stability_kind(const StabilityRow& row);
-
-// The criterion: energy growth by 1e6 within 1000 periods of the fastest contact mode.
-inline constexpr double stability_horizon_periods = 1000.0;
-inline constexpr double stability_growth = 1e6;
 
 // Contact scenes run once per zeta, fast_spin once per omega_max; the eigenvalue limit is
 // NaN where the scene's state is not an equilibrium at rest.

@@ -1,5 +1,4 @@
 #include "harness/analysis/stability.hpp"
-#include "harness/analysis/stability_study.hpp"
 #include "harness/engine/interrupt.hpp"
 #include "harness/engine/run_kinds.hpp"
 
@@ -12,7 +11,7 @@ RunResult run_stability_search(const RunSpec& requested) {
     if (!probe) throw InputError("scene '" + requested.scene + "' is not a stability scene");
     RunResult result{requested, {}, {}};
     result.spec.t_end = scene->t_end();
-    const StabilityCriterion criterion{stability_horizon_periods * probe->period(), stability_growth};
+    const StabilityCriterion criterion = stability_criterion(*probe);
     const double limit = empirical_limit(*scene, requested.scheme, probe->predicted_limit(), criterion);
     if (interrupt_signal()) {
         result.interrupted = true;
