@@ -118,16 +118,16 @@ std::string answer_section(const ResultSet& set, const std::vector<LargestDt>& a
     const auto scenes = ranking_scenes(answers);
     std::string md = fmt::format(
         "## The answer: the largest dt for a tolerance\n\n"
-        "For a tolerance on the relative angular-velocity error (`omega_err_max` / `omega_ref_max`, the largest error "
+        "For a tolerance on the relative angular-velocity error (`{1}` / `{2}`, the largest error "
         "over the run against the largest |w|), the largest dt at which each scheme meets it, and the CPU time a whole run "
         "at that dt takes (the scheme's `ns_per_step` on that scene times the steps). The dt is interpolated (log-log) "
         "between the two measured steps around the tolerance; \"≥\": the coarsest step measured already meets it; "
         "\"extrap.\": no measured step does, and the finest one is extended with the observed order; \"exact\": round-off "
         "only at every step, so only stability limits dt; \"never\": no step meets it and the error does not converge. "
         "*Stable*: whether that dt lies below the measured stability limit (section [Stability](#stability-limits); "
-        "\"unknown\" without a stability study). Ranked by the geometric mean of the CPU times on {}; all scenes and "
+        "\"unknown\" without a stability study). Ranked by the geometric mean of the CPU times on {0}; all scenes and "
         "`answer.csv` follow.\n\n",
-        fmt::format("`{}`", fmt::join(scenes, "` and `")));
+        fmt::format("`{}`", fmt::join(scenes, "` and `")), metric::omega_err_max, metric::omega_ref_max);
     for (const double tol : tolerances) {
         struct Row {
             std::string scheme;
