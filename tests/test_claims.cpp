@@ -80,6 +80,8 @@ TEST_CASE("claims: exact means every error within 10 eps per step times |w_ref|,
     CHECK_FALSE(j.passed);
     CHECK(j.bound == Approx(2000 * eps));
     CHECK_FALSE(judge_exact({}).passed);  // nothing to judge is not a pass
+    const RunResult unmeasured = exact(std::numeric_limits<double>::quiet_NaN());
+    CHECK_FALSE(judge_exact({&unmeasured, &round_off}).passed);  // a NaN error stays the worst, whatever follows it
 }
 
 TEST_CASE("claims: momentum to round-off is (4 N + 16) eps, and the sanity bound 5 %") {

@@ -4,6 +4,7 @@
 #include "harness/analysis/round_off.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <fmt/format.h>
 
 namespace rotbench {
@@ -46,7 +47,8 @@ RoundOffJudgement within_round_off(const RunRefs& runs, std::initializer_list<co
     for (const RunResult* r : runs)
         for (const char* m : metrics) {
             const double value = r->value(m), bound = round_off_bound(*r, m), ratio = value / bound;
-            if (!out.run || !(ratio <= worst)) worst = ratio, out.j.measured = value, out.j.bound = bound, out.run = r;
+            const bool worse = !out.run || std::isnan(ratio) || (!std::isnan(worst) && ratio > worst);
+            if (worse) worst = ratio, out.j.measured = value, out.j.bound = bound, out.run = r;
         }
     out.j.passed = out.run && worst <= 1.0;
     if (!out.run) out.j.message = "no run to judge";
