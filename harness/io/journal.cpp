@@ -2,18 +2,12 @@
 
 #include "harness/io/parse.hpp"
 #include "harness/io/plugin.hpp"
-#include "harness/io/series_csv.hpp"
 #include "harness/io/output_files.hpp"
-#include "harness/io/results_csv.hpp"
 #include "harness/io/run_record.hpp"
 
-#include <cerrno>
-#include <cstring>
-#include <fcntl.h>
 #include <fmt/format.h>
 #include <sstream>
 #include <stdexcept>
-#include <unistd.h>
 
 namespace rotbench {
 namespace fs = std::filesystem;
@@ -114,23 +108,7 @@ fs::path Journal::working_directory(const fs::path& out_dir) {
 std::map<std::size_t, RunResult> Journal::finished() const { return read_records(journal_dir(out_.path()) / "runs.jsonl", plan_).runs; }
 
 void Journal::record(std::size_t plan_index, const RunResult& result) const {
-    const std::string record = run_record(plan_index, result);
-    // One write(2) in append mode per record: records of several threads do not interleave.
-    const fs::path file = journal_dir(out_.path()) / "runs.jsonl";
-    const int fd = ::open(file.c_str(), O_WRONLY | O_APPEND | O_CREAT | O_CLOEXEC, 0644);
-    if (fd < 0) throw OutputError(fmt::format("cannot write {}: {}", file.string(), std::strerror(errno)));
-    std::size_t written = 0;
-    while (written < record.size()) {
-        const ssize_t n = ::write(fd, record.data() + written, record.size() - written);
-        if (n < 0 && errno == EINTR) continue;
-        if (n <= 0) {
-            const int error = n < 0 ? errno : ENOSPC;
-            ::close(fd);
-            throw OutputError(fmt::format("cannot write {}: {}", file.string(), std::strerror(error)));
-        }
-        written += static_cast<std::size_t>(n);
-    }
-    ::close(fd);
+    append_to_file(journal_dir(out_.path()) / "runs.jsonl", run_record(plan_index, result));
 }
 
 void Journal::discard(const fs::path& out_dir) {

@@ -14,6 +14,21 @@
 
 namespace rotbench {
 
+namespace {
+
+// All of `content` to fd, again after EINTR: 0, or the errno (ENOSPC when nothing was written).
+int write_all(int fd, const std::string& content) {
+    for (std::size_t done = 0; done < content.size();) {
+        const ssize_t n = ::write(fd, content.data() + done, content.size() - done);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) return n < 0 ? errno : ENOSPC;
+        done += static_cast<std::size_t>(n);
+    }
+    return 0;
+}
+
+}  // namespace
+
 void write_file_atomically(const std::filesystem::path& path, const std::string& content) {
     // The temporary name is unique to the process and the call: two processes or threads
     // writing the same file (a shared cache) each rename a complete file.
@@ -22,23 +37,21 @@ void write_file_atomically(const std::filesystem::path& path, const std::string&
         path.parent_path() / fmt::format(".{}.{}.{}.tmp", path.filename().string(), ::getpid(), serial++);
     const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
     if (fd < 0) throw OutputError(fmt::format("cannot write {}: {}", path.string(), std::strerror(errno)));
-    std::size_t done = 0;
-    int error = 0;
-    while (done < content.size()) {
-        const ssize_t n = ::write(fd, content.data() + done, content.size() - done);
-        if (n < 0 && errno == EINTR) continue;
-        if (n <= 0) {
-            error = n < 0 ? errno : ENOSPC;
-            break;
-        }
-        done += static_cast<std::size_t>(n);
-    }
+    int error = write_all(fd, content);
     if (::close(fd) != 0 && error == 0) error = errno;
     if (error == 0 && std::rename(temporary.c_str(), path.c_str()) != 0) error = errno;
     if (error != 0) {
         ::unlink(temporary.c_str());
         throw OutputError(fmt::format("cannot write {}: {}", path.string(), std::strerror(error)));
     }
+}
+
+void append_to_file(const std::filesystem::path& path, const std::string& content) {
+    const int fd = ::open(path.c_str(), O_WRONLY | O_APPEND | O_CREAT | O_CLOEXEC, 0644);
+    if (fd < 0) throw OutputError(fmt::format("cannot write {}: {}", path.string(), std::strerror(errno)));
+    int error = write_all(fd, content);
+    if (::close(fd) != 0 && error == 0) error = errno;
+    if (error != 0) throw OutputError(fmt::format("cannot write {}: {}", path.string(), std::strerror(error)));
 }
 
 std::optional<std::string> read_file(const std::filesystem::path& path) {

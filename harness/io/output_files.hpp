@@ -21,6 +21,10 @@ struct OutputError : std::runtime_error {
 // OutputError naming the file and the reason; no temporary file is left behind.
 void write_file_atomically(const std::filesystem::path& path, const std::string& content);
 
+// Appends `content` to the file (made if absent) in append mode: one write(2) a call, so
+// that records appended by several threads do not interleave. OutputError naming the file.
+void append_to_file(const std::filesystem::path& path, const std::string& content);
+
 // The whole file as it is on disk, or nothing when it cannot be opened.
 std::optional<std::string> read_file(const std::filesystem::path& path);
 
