@@ -99,6 +99,7 @@ std::string energy_cell(const ResultSet& set, const std::string& scheme) {
     if (by_scene.empty()) return "—";
     bool kept = true, drifting = false, judged = false;
     double worst_growth = 0, worst_bounded = 0;
+    std::string failed;  // scenes whose horizon run failed: not bounded, and no growth to show
     for (const auto& [scene, runs] : by_scene) {
         const bool scene_kept = std::all_of(runs.begin(), runs.end(), [](const RunResult* r) {
             return r->value(metric::energy_drift_max) <= round_off_bound(*r, metric::energy_drift_max);
@@ -109,13 +110,17 @@ std::string energy_cell(const ResultSet& set, const std::string& scheme) {
             if (h.spec.scene != scene || h.spec.scheme != scheme) continue;
             judged = true;
             const Judgement j = judge_bounded_energy(h);
-            if (j.passed) worst_bounded = std::max(worst_bounded, h.value(metric::energy_drift_horizon));
-            else drifting = true, worst_growth = std::max(worst_growth, std::isnan(j.measured) ? INFINITY : j.measured);
+            if (!h.failure.empty()) failed += (failed.empty() ? "" : ", ") + scene;
+            else if (j.passed) worst_bounded = std::max(worst_bounded, h.value(metric::energy_drift_horizon));
+            else drifting = true, worst_growth = std::max(worst_growth, j.measured);
         }
     }
     if (kept) return "kept";
     if (!judged) return "—";
-    return drifting ? fmt::format("drifting (grew {:.3g}x)", worst_growth) : fmt::format("bounded (≤ {:.1e})", worst_bounded);
+    const std::string failures = failed.empty() ? "" : fmt::format("; failed over {:g} T on {}", energy_horizon, failed);
+    if (drifting) return fmt::format("drifting (grew {:.3g}x){}", worst_growth, failures);
+    if (!failed.empty()) return "not judged" + failures;
+    return fmt::format("bounded (≤ {:.1e})", worst_bounded);
 }
 
 std::string stability_cell(const std::vector<StabilityRow>& stability, const std::string& scheme) {
@@ -160,7 +165,7 @@ std::string verdict_section(const ResultSet& set, const std::vector<OrderRow>& o
         "judged as the gate judges the bounded-energy claim, on each such scene's horizon run (its coarsest step, over the "
         "scene's duration T and {0:g} T): \"bounded\" (with the largest error over {0:g} T) when the largest energy error "
         "grows at most sqrt({0:g}) = {1:.2f} times from T to {0:g} T (a drift as t^a grows it {0:g}^a times), \"drifting\" "
-        "(with the largest growth) when not. *Stability / Peng*: the measured stability "
+        "(with the largest growth) when not, \"not judged\" where the horizon run itself failed. *Stability / Peng*: the measured stability "
         "limit over Peng et al.'s prediction on the contact pairs, every damping ratio (below 1: Peng's dt is unsafe). "
         "*ns / step*: **the cost figure of this report**, the median `ns_per_step` of the scheme's runs on `{2}` (one "
         "body; the per-thread CPU time of a run without its metrics over its steps); every CPU time in the report is "

@@ -144,6 +144,17 @@ TEST_CASE("claims: the gate fails each claim the judge fails, with the judge's m
     CHECK_THAT(result.verdicts[2].message, Catch::Contains(judge_bounded_energy(horizon(1.0)).message));
 }
 
+TEST_CASE("claims: a horizon run that failed is no energy verdict, and the table says where it failed") {
+    RunResult failed = horizon(0.0);
+    failed.failure = "over 80 s: blew up at step 7000 (t = 70 s)";
+    failed.metrics.clear();
+    std::vector<RunResult> runs = {run(0.01, {{metric::energy_drift_max, 1e-6}, {metric::steps, 1000}}, RunKind::trajectory, 10.0), failed};
+    for (auto& r : runs) r.spec.scene = "dipole_top";
+    const std::string table = verdict_section(describe(runs), {}, {});
+    INFO(table);
+    CHECK(table.find("| not judged; failed over 8 T on dipole_top |") != std::string::npos);
+}
+
 TEST_CASE("claims: the report's energy verdict is the gate's judgement of the same horizon run") {
     for (const double a : {0.0, 0.4, 1.0}) {
         std::vector<RunResult> runs = {run(0.01, {{metric::energy_drift_max, 1e-6}, {metric::steps, 1000}}, RunKind::trajectory, 10.0),
