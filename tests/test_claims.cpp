@@ -62,6 +62,15 @@ TEST_CASE("claims: a claimed order holds within 0.2 when its interval reaches it
     CHECK_THAT(with_failure.message, Catch::Contains("blew up at step 3"));
 }
 
+TEST_CASE("claims: a gate's min_order check holds an order, or every error at round-off, and nothing else") {
+    CHECK(judge_min_order(refs(ladder(3.0, 2.0)), "omega_err_max", 1.5, 1e-13).passed);
+    CHECK_FALSE(judge_min_order(refs(ladder(3.0, 1.0)), "omega_err_max", 1.5, 1e-13).passed);
+    CHECK(judge_min_order(refs(ladder(1e-15, 0.0)), "omega_err_max", 1.5, 1e-13).passed);  // exact
+    const Judgement flat = judge_min_order(refs(ladder(1e-3, 0.0)), "omega_err_max", 1.5, 1e-13);
+    CHECK_FALSE(flat.passed);
+    CHECK_THAT(flat.message, Catch::StartsWith("no order: omega_err_max does not fall"));
+}
+
 TEST_CASE("claims: a scheme that claims nothing must converge at order 0.8 at least") {
     CHECK(judge_sanity_order(refs(ladder(1.0, 1.0))).passed);
     CHECK_FALSE(judge_sanity_order(refs(ladder(1.0, 0.5))).passed);

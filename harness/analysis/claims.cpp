@@ -19,9 +19,9 @@ std::string failed_run(const RunRefs& runs) {
     return "";
 }
 
-std::vector<OrderPoint> points_of(const RunRefs& runs) {
+std::vector<OrderPoint> points_of(const RunRefs& runs, std::string_view name = metric::omega_err_max) {
     std::vector<OrderPoint> points;
-    for (const RunResult* r : runs) points.push_back({r->spec.dt, r->value(metric::omega_err_max)});
+    for (const RunResult* r : runs) points.push_back({r->spec.dt, r->value(name)});
     return points;
 }
 
@@ -140,6 +140,33 @@ Judgement judge_sanity_order(const RunRefs& ladder) {
     }
     j.message = fmt::format("{} does not fall as a power of dt (errors {} from dt {} to {}), required an order of at least {}",
                             metric::omega_err_max, errors_text(points), g(points.front().dt), g(points.back().dt), sanity_min_order);
+    return j;
+}
+
+Judgement judge_min_order(const RunRefs& ladder, const std::string& name, double min_order, double round_off) {
+    Judgement j;
+    j.bound = min_order;
+    if (const auto f = failed_run(ladder); !f.empty()) {
+        j.message = f;
+        return j;
+    }
+    const auto points = points_of(ladder, name);
+    const OrderFit fit = fit_order(points);
+    double worst = 0;
+    for (const auto& p : points) worst = std::max(worst, std::isnan(p.error) ? INFINITY : p.error);
+    if (fit.sufficient) {
+        j.measured = fit.order, j.lo = fit.order_lo, j.hi = fit.order_hi;
+        j.passed = fit.order >= min_order;
+        j.message = fmt::format("observed order {:.2f} [{:.2f}, {:.2f}] of {} over dt {} ... {} ({} points), required >= {}", fit.order,
+                                fit.order_lo, fit.order_hi, name, g(fit.dt_max), g(fit.dt_min), fit.points, g(min_order));
+    } else if (worst <= round_off) {
+        j.measured = INFINITY;
+        j.passed = true;
+        j.message = fmt::format("exact to round-off: every {} is at most {} (<= round_off {})", name, g(worst), g(round_off));
+    } else {
+        j.message = fmt::format("no order: {} does not fall as a power of dt (errors {} from dt {} to {}), required >= {}", name,
+                                errors_text(points), g(points.front().dt), g(points.back().dt), g(min_order));
+    }
     return j;
 }
 

@@ -50,6 +50,9 @@ inline const double energy_growth_bound = std::sqrt(energy_horizon);
 Judgement judge_order(const RunRefs& ladder, int claimed);
 // At least sanity_min_order over a ladder.
 Judgement judge_sanity_order(const RunRefs& ladder);
+// A gate's min_order check: the order of `metric` over a ladder at least `min_order`, or
+// every error at most `round_off` (exact).
+Judgement judge_min_order(const RunRefs& ladder, const std::string& metric, double min_order, double round_off);
 // Every error of every run within its round-off bound (round_off.hpp).
 Judgement judge_exact(const RunRefs& runs);
 // The angular momentum kept to round-off in every run.

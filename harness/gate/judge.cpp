@@ -2,7 +2,6 @@
 // is judged by the claims module (harness/analysis/claims.hpp), a [[check]] here. Every bound
 // is stated in the message with where it comes from.
 #include "harness/analysis/claims.hpp"
-#include "harness/analysis/order_fit.hpp"
 #include "harness/gate/gate.hpp"
 
 #include <algorithm>
@@ -17,23 +16,10 @@ std::string g(double v) { return fmt::format("{:.3g}", v); }
 
 using Runs = RunRefs;
 
-// The first failed run, as a verdict's message; empty when none failed.
-std::string failed_run(const Runs& runs) {
-    for (const RunResult* r : runs)
-        if (!r->failure.empty()) return fmt::format("the run at dt = {} failed: {}", g(r->spec.dt), r->failure);
-    return "";
-}
-
-std::vector<OrderPoint> points_of(const Runs& runs, std::string_view metric) {
-    std::vector<OrderPoint> points;
-    for (const RunResult* r : runs) points.push_back({r->spec.dt, r->value(metric)});
-    return points;
-}
-
-std::string errors_text(const std::vector<OrderPoint>& points) {
-    std::string errors;
-    for (const auto& p : points) errors += (errors.empty() ? "" : ", ") + g(p.error);
-    return errors;
+// The judgement as the verdict's figures, its message after `name`.
+void take(Verdict& v, const Judgement& j, const std::string& name) {
+    v.passed = j.passed, v.measured = j.measured, v.lo = j.lo, v.hi = j.hi, v.bound = j.bound;
+    v.message = name + ": " + j.message;
 }
 
 // A claim of the scheme on the scene, judged by the claims module.
@@ -53,29 +39,7 @@ void judge_check(Verdict& v, const GateCheck& c, const Runs& runs) {
     v.bound = c.bound;
     const std::string name = fmt::format("{} on {}", c.name, c.scene);
     if (c.criterion == "min_order") {
-        if (const auto f = failed_run(runs); !f.empty()) {
-            v.message = name + ": " + f;
-            return;
-        }
-        const auto points = points_of(runs, c.metric);
-        const OrderFit fit = fit_order(points);
-        double worst = 0;
-        for (const auto& p : points) worst = std::max(worst, std::isnan(p.error) ? INFINITY : p.error);
-        if (fit.sufficient) {
-            v.measured = fit.order, v.lo = fit.order_lo, v.hi = fit.order_hi;
-            v.passed = fit.order >= c.bound;
-            v.message = fmt::format("{}: observed order {:.2f} [{:.2f}, {:.2f}] of {} over dt {} ... {} ({} points), required >= {}",
-                                    name, fit.order, fit.order_lo, fit.order_hi, c.metric, g(fit.dt_max), g(fit.dt_min), fit.points,
-                                    g(c.bound));
-        } else if (worst <= c.round_off) {
-            v.measured = INFINITY;
-            v.passed = true;
-            v.message = fmt::format("{}: exact to round-off: every {} is at most {} (<= round_off {})", name, c.metric, g(worst),
-                                    g(c.round_off));
-        } else {
-            v.message = fmt::format("{}: no order: {} does not fall as a power of dt (errors {} from dt {} to {}), required >= {}",
-                                    name, c.metric, errors_text(points), g(points.front().dt), g(points.back().dt), g(c.bound));
-        }
+        take(v, judge_min_order(runs, c.metric, c.bound, c.round_off), name);
         return;
     }
     const RunResult& r = *runs.front();
@@ -137,9 +101,7 @@ GateResult judge_gate(const GateFile& file, const GatePlan& plan, std::vector<Ru
         if (c.family == "check") {
             judge_check(v, file.checks.at(c.check), used);
         } else {
-            const Judgement j = judge_claim(c, used);
-            v.passed = j.passed, v.measured = j.measured, v.lo = j.lo, v.hi = j.hi, v.bound = j.bound;
-            v.message = fmt::format("{} on {}: {}", c.id, c.scene, j.message);
+            take(v, judge_claim(c, used), c.id + " on " + c.scene);
         }
         v.message = v.of.scheme + ": " + v.message;
         result.verdicts.push_back(std::move(v));
