@@ -1,7 +1,5 @@
 #include "harness/analysis/result_set.hpp"
 
-#include "harness/scenes/stability_probe.hpp"
-
 namespace rotbench {
 
 SchemeInfo scheme_info(const std::string& id) {
@@ -20,7 +18,7 @@ SceneInfo scene_info(const Scene& scene) {
                    scene.conserves_angular_momentum(),
                    scene.torque_depends_on_orientation(),
                    scene.initial_state().size()};
-    info.stability_scene = dynamic_cast<const StabilityProbe*>(&scene) != nullptr;
+    info.stability_scene = scene.scene_traits().stability;
     for (const auto& p : scene.params.entries())
         if (p.key == "zeta" && p.value.size() == 1) info.zeta = p.value.front();
     return info;
