@@ -37,15 +37,14 @@ std::vector<std::size_t> shard_indices(std::size_t plan_size, const Shard& shard
 
 std::string plan_id(const std::vector<RunSpec>& plan) {
     Fnv1a h;
-    const auto feed = [&](const std::string& s) { h.feed(s); };
     for (const auto& r : plan) {
-        feed(fmt::format("{}|{}|{}|{}|{:a}|{:a}|", r.scene, r.scheme, kind_name(r.kind), r.timed ? "timed" : "untimed", r.dt,
-                         r.t_end));
+        h.feed(fmt::format("{}|{}|{}|{}|{:a}|{:a}|", r.scene, r.scheme, kind_name(r.kind), r.timed ? "timed" : "untimed", r.dt,
+                           r.t_end));
         for (const auto& [key, values] : r.params) {
-            feed(key);
-            for (double v : values) feed(fmt::format("={:a}", v));
+            h.feed(key);
+            for (double v : values) h.feed(fmt::format("={:a}", v));
         }
-        feed("\n");
+        h.feed("\n");
     }
     return h.hex();
 }
