@@ -4,7 +4,7 @@
 // the registry. A bad plug-in is one line on stderr and exit 2, as for `rotbench run`.
 #pragma once
 
-#include "harness/io/plugin.hpp"
+#include "harness/store/plugin.hpp"
 
 #include <cstdio>
 #include <cstdlib>

@@ -1,5 +1,5 @@
 # The layers of rotbench (docs/architecture.md), bottom up:
-#   schemes -> references -> scenes -> core -> harness -> reports -> cli
+#   schemes -> references -> scenes -> core -> store -> exec -> analysis -> reports -> cli
 # Each is an OBJECT library that sees, through its include tree, only its own folders and those
 # of the layers it links. An include tree is a directory of the build holding symbolic links
 # to the folders a layer owns, so that `#include "harness/..."` in a scheme finds nothing and
@@ -41,4 +41,4 @@ endfunction()
 # Object files are linked only into targets that link their library directly (CMake's rule
 # for OBJECT libraries), and the self-registering schemes, scenes and verbs must all be in:
 # an executable links every layer it uses.
-set(ROTBENCH_ALL_LAYERS rotbench_cli rotbench_reports rotbench_harness rotbench_core rotbench_scenes rotbench_references rotbench_schemes)
+set(ROTBENCH_ALL_LAYERS rotbench_cli rotbench_reports rotbench_analysis rotbench_exec rotbench_store rotbench_core rotbench_scenes rotbench_references rotbench_schemes)

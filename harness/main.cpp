@@ -1,7 +1,7 @@
 // rotbench: dispatches to the verbs of harness/cli/, one file each. Its own executable is the
-// worker that plug-in runs are isolated in (harness/engine/isolation.hpp).
+// worker that plug-in runs are isolated in (harness/exec/isolation.hpp).
 #include "harness/cli/cli.hpp"
-#include "harness/engine/isolation.hpp"
+#include "harness/exec/isolation.hpp"
 
 #include <filesystem>
 #include <iostream>

@@ -1,7 +1,7 @@
 #include "reports/answer.hpp"
 
-#include "harness/io/csv.hpp"
-#include "harness/io/output_files.hpp"
+#include "harness/store/csv.hpp"
+#include "harness/store/output_files.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
 #include "reports/convergence_plots.hpp"
 
-#include "harness/io/output_files.hpp"
+#include "harness/store/output_files.hpp"
 #include "reports/gnuplot.hpp"
 #include "reports/panels.hpp"
 

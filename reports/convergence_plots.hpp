@@ -4,7 +4,7 @@
 #pragma once
 
 #include "harness/analysis/result_set.hpp"
-#include "harness/io/output_dir.hpp"
+#include "harness/store/output_dir.hpp"
 
 #include <string>
 #include <vector>

@@ -1,6 +1,6 @@
 #include "reports/cost_table.hpp"
 
-#include "harness/io/output_files.hpp"
+#include "harness/store/output_files.hpp"
 #include "reports/escape.hpp"
 
 #include <algorithm>

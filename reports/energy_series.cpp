@@ -1,7 +1,7 @@
 #include "reports/energy_series.hpp"
 
-#include "harness/io/output_files.hpp"
-#include "harness/io/series_csv.hpp"
+#include "harness/store/output_files.hpp"
+#include "harness/store/series_csv.hpp"
 #include "reports/gnuplot.hpp"
 #include "reports/panels.hpp"
 #include "reports/seed_figures.hpp"
@@ -61,7 +61,7 @@ std::string energy_slopes(const std::map<std::pair<std::string, double>, std::ve
 
 }  // namespace
 
-std::string energy_series_section(const ResultSet& set, const OutputDir& dir, const Executor& executor) {
+std::string energy_series_section(const ResultSet& set, const OutputDir& dir, const ParallelWork& parallel) {
     const std::vector<RunResult>& results = set.runs;
     // Plotted per scene: the coarsest and the finest step, and the steps of the seed's figures.
     std::map<std::string, std::pair<double, double>> range;  // scene -> (finest, coarsest)
@@ -94,7 +94,7 @@ std::string energy_series_section(const ResultSet& set, const OutputDir& dir, co
     // The groups on every core (gnuplot draws one plot per process); their parts join in order.
     const std::vector group_list(groups.begin(), groups.end());
     std::vector<std::string> parts(group_list.size());
-    executor(group_list.size(), [&](std::size_t g) {
+    parallel(group_list.size(), [&](std::size_t g) {
         const std::string& scene = group_list[g].first.first;
         const double dt = group_list[g].first.second;
         const std::vector<const RunResult*>& runs = group_list[g].second;

@@ -5,8 +5,8 @@
 #pragma once
 
 #include "harness/analysis/result_set.hpp"
-#include "harness/io/output_dir.hpp"
-#include "reports/executor.hpp"
+#include "harness/store/output_dir.hpp"
+#include "reports/parallel_work.hpp"
 
 #include <filesystem>
 #include <string>
@@ -15,8 +15,8 @@
 namespace rotbench {
 
 // Writes DIR/series/*.csv and DIR/plots/energy_*.{gp,svg}; returns the Markdown section
-// (empty when no run recorded a series); the plots are drawn through `executor`.
+// (empty when no run recorded a series); the plots are drawn through `parallel`.
 std::string energy_series_section(const ResultSet& set, const OutputDir& dir,
-                                  const Executor& executor = run_serially);
+                                  const ParallelWork& parallel = run_serially);
 
 }  // namespace rotbench

@@ -1,6 +1,6 @@
 #include "reports/escape.hpp"
 
-#include "harness/io/utf8.hpp"
+#include "harness/store/utf8.hpp"
 
 #include <fmt/format.h>
 

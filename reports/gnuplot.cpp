@@ -1,6 +1,6 @@
 #include "reports/gnuplot.hpp"
 
-#include "harness/io/output_files.hpp"
+#include "harness/store/output_files.hpp"
 
 #include <atomic>
 #include <cerrno>

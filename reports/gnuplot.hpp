@@ -4,7 +4,7 @@
 // whole, so a full disk or a kill never leaves half a plot.
 #pragma once
 
-#include "harness/io/output_dir.hpp"
+#include "harness/store/output_dir.hpp"
 
 #include <string>
 

@@ -1,6 +1,6 @@
 #include "reports/granular_pictures.hpp"
 
-#include "harness/io/series_csv.hpp"
+#include "harness/store/series_csv.hpp"
 #include "reports/escape.hpp"
 #include "reports/gnuplot.hpp"
 #include "reports/panels.hpp"

@@ -5,8 +5,8 @@
 // (walls/*.csv) as lines.
 #pragma once
 
-#include "harness/engine/run.hpp"
-#include "harness/io/output_dir.hpp"
+#include "harness/exec/run.hpp"
+#include "harness/store/output_dir.hpp"
 
 #include <string>
 #include <vector>

@@ -214,7 +214,7 @@ std::string link(const std::string& text, const std::string& heading) { return "
 }  // namespace
 
 std::string markdown_report(const ResultSet& set, const std::string& command_line, const OutputDir& dir,
-                            const ReportOptions& options, const Executor& executor) {
+                            const ReportOptions& options, const ParallelWork& parallel) {
     const std::vector<RunResult>& results = set.runs;
     std::vector<ExpectedOrder> expected;
     for (const auto& [id, info] : set.schemes) add_expected_orders(id, info.claims, expected);
@@ -266,13 +266,13 @@ std::string markdown_report(const ResultSet& set, const std::string& command_lin
     // The scenes' sections on every core: most of their time is gnuplot drawing the plots,
     // one process at a time otherwise. Each section is its own string; they join in order.
     std::vector<std::string> sections(scenes.size());
-    executor(scenes.size(), [&](std::size_t i) {
+    parallel(scenes.size(), [&](std::size_t i) {
         scene_section(sections[i], set.scene(scenes[i]), set, orders, dir, best_on(scenes[i]), expected);
     });
     for (const auto& section : sections) md += section;
     table1_section(md, results);
     md += granular_section(set, dir);
-    md += energy_series_section(set, dir, executor);
+    md += energy_series_section(set, dir, parallel);
     schemes_section(md, set, expected);
     md += "## Metrics and the order fit\n\n";
     for (const auto& m : metric_table())

@@ -5,9 +5,9 @@
 
 #include "harness/analysis/result_set.hpp"
 #include "harness/analysis/stability_study.hpp"
-#include "harness/io/output_dir.hpp"
+#include "harness/store/output_dir.hpp"
 #include "reports/answer.hpp"
-#include "reports/executor.hpp"
+#include "reports/parallel_work.hpp"
 
 #include <string>
 #include <vector>
@@ -20,8 +20,8 @@ struct ReportOptions {
 };
 
 // Also writes the files the report links to (answer.csv, series, plots) under `dir`; the
-// plots are drawn through `executor`.
+// plots are drawn through `parallel`.
 std::string markdown_report(const ResultSet& set, const std::string& command_line, const OutputDir& dir,
-                            const ReportOptions& options = {}, const Executor& executor = run_serially);
+                            const ReportOptions& options = {}, const ParallelWork& parallel = run_serially);
 
 }  // namespace rotbench

@@ -2,7 +2,7 @@
 // three schemes x five time steps, side by side with the computed values.
 #pragma once
 
-#include "harness/engine/run.hpp"
+#include "harness/exec/run.hpp"
 
 #include <optional>
 #include <string>

@@ -1,6 +1,7 @@
 #include "reports/stability_report.hpp"
 
-#include "harness/io/output_files.hpp"
+#include "harness/exec/stability.hpp"
+#include "harness/store/output_files.hpp"
 #include "reports/gnuplot.hpp"
 #include "reports/panels.hpp"
 

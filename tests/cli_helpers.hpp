@@ -2,9 +2,9 @@
 #pragma once
 
 #include "harness/cli/cli.hpp"
-#include "harness/io/csv.hpp"
-#include "harness/io/parse.hpp"
-#include "harness/engine/run.hpp"
+#include "harness/store/csv.hpp"
+#include "harness/store/parse.hpp"
+#include "harness/exec/run.hpp"
 
 #include <algorithm>
 #include <cstdio>

@@ -5,6 +5,7 @@
 
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <iostream>
 #include <nlohmann/json.hpp>
 
 using namespace rotbench;
@@ -37,7 +38,8 @@ TEST_CASE("advise: every recommended dt lies below its measured limit, and verif
     for (const auto& c : cases)
         for (const double tolerance : {1e-3, 1e-5}) {
             INFO(c.name << ", tolerance " << tolerance);
-            const Advice a = advise(c.particle, tolerance, schemes, true, 2);
+            Executor executor(std::cout, std::cerr, {.jobs = 2, .quiet = true});
+            const Advice a = advise(executor, c.particle, tolerance, schemes, true);
             CHECK(a.recommendations.size() >= 2);  // fincham and no_squish at least
             for (const auto& r : a.recommendations) {
                 INFO(r.scheme << " at dt " << r.dt << " (" << r.how << "), limit " << r.dt_stability);
@@ -62,7 +64,8 @@ TEST_CASE("advise: a scheme whose ladder ends before its error is asymptotic is 
     // whose limit is 70 times lower, was recommended. (A [study]: at the dt of 2e-6 s they need,
     // the runs and their references take minutes under the sanitizers.)
     const Particle particle{Eigen::Vector3d(1, 2, 3), 1, 1e4, 0, 10, 0};
-    const Advice a = advise(particle, 1e-2, {"zvw_corrected", "spiral"}, true, 2);
+    Executor executor(std::cout, std::cerr, {.jobs = 2, .quiet = true});
+    const Advice a = advise(executor, particle, 1e-2, {"zvw_corrected", "spiral"}, true);
     REQUIRE(a.recommendations.size() == 2);
     for (const auto& r : a.recommendations) {
         INFO(r.scheme << " at dt " << r.dt << " (" << r.how << "), limit " << r.dt_stability);

@@ -1,5 +1,5 @@
-#include "harness/io/parse.hpp"
-#include "harness/engine/run.hpp"
+#include "harness/store/parse.hpp"
+#include "harness/exec/run.hpp"
 #include "schemes/scheme.hpp"
 #include "tests/cli_helpers.hpp"
 

@@ -2,8 +2,8 @@
 // error, a lost order, a run newly unstable or a significant slow-down fails.
 #include "harness/analysis/mann_whitney.hpp"
 #include "harness/gate/compare.hpp"
-#include "harness/io/csv.hpp"
-#include "harness/io/results_csv.hpp"
+#include "harness/store/csv.hpp"
+#include "harness/store/results_csv.hpp"
 #include "tests/cli_helpers.hpp"
 
 #include <catch2/catch.hpp>

@@ -1,6 +1,7 @@
-#include "harness/io/config.hpp"
+#include "cli_helpers.hpp"
+#include "harness/cli/config.hpp"
 #include "harness/gate/gate_file.hpp"
-#include "harness/engine/export.hpp"
+#include "harness/exec/export.hpp"
 
 #include <catch2/catch.hpp>
 #include <filesystem>
@@ -8,6 +9,8 @@
 #include <sstream>
 
 using namespace rotbench;
+using namespace rotbench::test;
+namespace fs = std::filesystem;
 
 namespace {
 
@@ -62,9 +65,12 @@ TEST_CASE("the option --set SCENE.KEY=VALUE") {
 }
 
 TEST_CASE("reference and trajectory exports have the contract columns") {
-    const auto scene = make_scene("asymmetric_free");
-    const std::string reference = reference_csv(*scene, 10);
-    std::istringstream lines(reference);
+    const fs::path dir = fresh_dir("exports");
+    fs::create_directories(dir);
+    const Cli reference = cli({"reference", "--scene", "asymmetric_free", "--samples", "10", "--out", (dir / "ref.csv").string()});
+    INFO(reference.err);
+    REQUIRE(reference.status == 0);
+    std::istringstream lines(read(dir / "ref.csv"));
     std::string header, line;
     std::getline(lines, header);
     CHECK(header == trajectory_header);
@@ -78,7 +84,9 @@ TEST_CASE("reference and trajectory exports have the contract columns") {
     CHECK(rows == 11);
     CHECK(worst < 1e-14);  // the closed form conserves energy to round-off
 
-    const std::string run = scheme_trajectory_csv(*scene, "zvw", 1e-2, 40);
+    REQUIRE(cli({"trajectory", "--scene", "asymmetric_free", "--scheme", "zvw", "--dt", "1e-2", "--samples", "40", "--out",
+                 (dir / "run.csv").string()}).status == 0);
+    const std::string run = read(dir / "run.csv");
     CHECK(run.rfind(std::string(trajectory_header) + "\n", 0) == 0);
     CHECK(std::count(run.begin(), run.end(), '\n') == 42);  // header + t = 0 + 40 rows (2000 steps, every 50th)
 }

@@ -1,6 +1,6 @@
 // The report's cost section, from a cost.csv as benchmarks/cost.py writes it.
 #include "reports/cost_table.hpp"
-#include "harness/io/output_files.hpp"
+#include "harness/store/output_files.hpp"
 
 #include <algorithm>
 #include <catch2/catch.hpp>

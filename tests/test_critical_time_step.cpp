@@ -1,4 +1,4 @@
-#include "harness/engine/run.hpp"
+#include "harness/exec/run.hpp"
 #include "harness/scenes/contact_pair.hpp"
 #include "references/critical_time_step.hpp"
 

@@ -1,9 +1,9 @@
-// The CSV writer and reader (harness/io/csv.hpp) and the run files built on them: whatever a
+// The CSV writer and reader (harness/store/csv.hpp) and the run files built on them: whatever a
 // field holds comes back as written, and a file that was cut, edited or mistyped is refused
 // with its file and line, never read as results.
-#include "harness/io/csv.hpp"
-#include "harness/io/results_csv.hpp"
-#include "harness/io/run_record.hpp"
+#include "harness/store/csv.hpp"
+#include "harness/store/results_csv.hpp"
+#include "harness/store/run_record.hpp"
 
 #include <catch2/catch.hpp>
 

@@ -1,8 +1,9 @@
 // Ensembles (harness/analysis/ensemble.hpp): K runs per scheme and dt from K seeds, collapsed
 // to a mean, a 95 % interval and a paired difference from the reference scheme.
 #include "harness/analysis/ensemble.hpp"
-#include "harness/engine/sweep.hpp"
-#include "harness/io/ensemble_csv.hpp"
+#include "harness/exec/executor.hpp"
+#include "harness/analysis/sweep_plan.hpp"
+#include "harness/analysis/ensemble_csv.hpp"
 
 #include <catch2/catch.hpp>
 #include <cmath>

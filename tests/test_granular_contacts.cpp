@@ -1,7 +1,7 @@
 // The granular scenes' contact model (harness/granular) against closed forms, stepped by the
 // harness's own loop: a sphere at rest on a plane, a sphere bouncing, a block on an incline,
 // two clusters colliding.
-#include "harness/engine/run.hpp"
+#include "harness/exec/run.hpp"
 #include "harness/granular/cluster_system.hpp"
 #include "schemes/quaternion.hpp"
 

@@ -3,9 +3,9 @@
 #include "cli_helpers.hpp"
 
 #include "harness/granular/wall_outline.hpp"
-#include "harness/io/results_csv.hpp"
-#include "harness/io/run_record.hpp"
-#include "harness/io/series_csv.hpp"
+#include "harness/store/results_csv.hpp"
+#include "harness/store/run_record.hpp"
+#include "harness/store/series_csv.hpp"
 #include "reports/granular_pictures.hpp"
 
 #include <catch2/catch.hpp>

@@ -1,7 +1,7 @@
 // The granular scenes end to end through the CLI: ensembles, their report section, shards.
 #include "cli_helpers.hpp"
 
-#include "harness/io/results_csv.hpp"
+#include "harness/store/results_csv.hpp"
 
 #include <catch2/catch.hpp>
 #include <cmath>

@@ -1,10 +1,12 @@
-#include "harness/engine/run.hpp"
-#include "harness/engine/sweep.hpp"
-#include "harness/engine/reference.hpp"
+#include "harness/exec/run.hpp"
+#include "harness/exec/executor.hpp"
+#include "harness/analysis/sweep_plan.hpp"
+#include "harness/exec/reference.hpp"
 #include "tests/cli_helpers.hpp"
 #include "schemes/quaternion.hpp"
 
 #include <catch2/catch.hpp>
+#include <sstream>
 #include <cmath>
 #include <filesystem>
 #include <cstring>
@@ -99,11 +101,13 @@ TEST_CASE("Munjiza's scheme keeps the angular momentum of a free body to round-o
 
 TEST_CASE("a scheme that fails is recorded and the sweep goes on") {
     const auto plan = plan_sweep({{"cylinder_free"}, {"test_nan", "test_throws", "test_explodes", "direct"}, {1e-3}, 0.0});
-    std::vector<std::string> seen;
-    const auto results = run_sweep(plan, {.measure_time = false}, [&](std::size_t, const RunResult& r) {
-        if (r.spec.kind == RunKind::trajectory) seen.push_back(r.spec.scheme);
-    });
+    std::ostringstream out, err;
+    Executor executor(out, err, {.run = {.measure_time = false}});
+    const auto results = executor.run(plan);
     REQUIRE(results.size() == 8);  // each scheme's run and its horizon run (cylinder_free's energy is judged)
+    std::vector<std::string> seen;
+    for (const auto& r : results)
+        if (r.spec.kind == RunKind::trajectory) seen.push_back(r.spec.scheme);
     CHECK(seen == std::vector<std::string>{"test_nan", "test_throws", "test_explodes", "direct"});
     const auto of = [&](const std::string& scheme, RunKind kind) -> const RunResult& {
         for (const auto& r : results)
@@ -129,6 +133,10 @@ TEST_CASE("a scheme that fails is recorded and the sweep goes on") {
     CHECK(of("direct", RunKind::trajectory).value("unstable") == 0);
     CHECK(of("direct", RunKind::trajectory).value("steps") == 500);
     CHECK(of("direct", RunKind::horizon).failure.empty());
+    // Each failed run is said in one line as it finishes, the others are not.
+    CHECK_THAT(out.str(), Catch::Contains("cylinder_free test_nan trajectory dt=0.001 FAILED: blew up at step 1"));
+    CHECK_THAT(out.str(), Catch::Contains("cylinder_free test_throws horizon dt=0.001 FAILED: over 0.5 s: threw: plug-in bug"));
+    CHECK_THAT(out.str(), !Catch::Contains("direct"));
 }
 
 TEST_CASE("a damped scene whose energy runs away upwards is stopped there, long before the state overflows") {
@@ -166,8 +174,9 @@ TEST_CASE("the option --jobs does not change the results: bit-identical apart fr
     spec.scenes = {"asymmetric_free", "dipole_top"};
     spec.quick = true;
     const auto plan = plan_sweep(spec);
-    const auto serial = run_sweep(plan, {.measure_time = false}, {}, 1);
-    const auto parallel = run_sweep(plan, {.measure_time = false}, {}, 3);
+    std::ostringstream out, err;
+    const auto serial = Executor(out, err, {.run = {.measure_time = false}, .jobs = 1}).run(plan);
+    const auto parallel = Executor(out, err, {.run = {.measure_time = false}, .jobs = 3}).run(plan);
     REQUIRE(serial.size() == parallel.size());
     for (std::size_t i = 0; i < serial.size(); ++i) {
         INFO(serial[i].spec.scene << " " << serial[i].spec.scheme << " " << serial[i].spec.dt);

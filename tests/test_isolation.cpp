@@ -1,12 +1,13 @@
-// Plug-in runs in a worker process (harness/engine/isolation.hpp): a scheme that segfaults,
+// Plug-in runs in a worker process (harness/exec/isolation.hpp): a scheme that segfaults,
 // aborts, exits, throws what is not a std::exception, hangs, exhausts memory or leaves a
 // process behind fails (or ends) its own runs, named, and the sweep goes on; an isolated run gives the numbers an in-process run
 // gives; a signal stops a sweep whose plug-in hangs at once.
 #include "harness/analysis/stability_study.hpp"
-#include "harness/engine/isolation.hpp"
-#include "harness/io/stability_csv.hpp"
+#include "harness/exec/isolation.hpp"
+#include "harness/analysis/stability_csv.hpp"
 #include "tests/cli_helpers.hpp"
 
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cctype>
 #include <chrono>
@@ -135,7 +136,7 @@ TEST_CASE("isolation: SIGINT or SIGTERM stops a sweep whose plug-in hangs, and k
                   "asymmetric_free", "--dt", "0.05", "--run-timeout", "600", "--out", dir.c_str(), nullptr);
             _exit(127);
         }
-        while (!fs::exists(dir / "partial" / "plan")) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+        while (!fs::exists(dir / "partial" / "command")) std::this_thread::sleep_for(std::chrono::milliseconds(5));
         const pid_t worker = child_of(pid);  // started, and hanging
         struct Reap {  // a failed check leaves neither hanging for ten minutes
             pid_t sweep, worker;
@@ -228,5 +229,24 @@ TEST_CASE("isolation: a plug-in's stability case in a worker gives the in-proces
         CHECK(read(dir / "isolated" / f) == read(dir / "in_process" / f));
     }
     CHECK_THAT(read(dir / "isolated" / "stability.csv"), Catch::Contains("zvw_end_velocity,0.1,sharp"));
+    fs::remove_all(dir);
+}
+
+TEST_CASE("isolation: `trajectory` of a plug-in that crashes fails in one line and writes nothing, one that throws keeps its steps") {
+    const fs::path dir = fresh_dir("isolation_trajectory");
+    fs::create_directories(dir);
+    const auto export_of = [&](const std::string& scheme) {
+        return cli({"trajectory", "--plugin", PLUGIN_CRASHING, "--scene", "asymmetric_free", "--scheme", scheme, "--dt", "1e-2", "--out",
+                    (dir / (scheme + ".csv")).string()});
+    };
+    const Cli crashed = export_of("bad_segfault");
+    CHECK(crashed.status == 1);
+    CHECK_THAT(crashed.err, Catch::EndsWith("rotbench: bad_segfault crashed: signal 11 (Segmentation fault) in its worker process; nothing written\n"));
+    CHECK_FALSE(fs::exists(dir / "bad_segfault.csv"));
+    const Cli threw = export_of("bad_throw42");
+    CHECK(threw.status == 0);
+    CHECK_THAT(threw.err, Catch::Contains("bad_throw42 threw after step 0"));
+    const std::string rows = read(dir / "bad_throw42.csv");
+    CHECK(std::count(rows.begin(), rows.end(), '\n') == 2);  // the header and t = 0
     fs::remove_all(dir);
 }

@@ -1,7 +1,7 @@
 #define CATCH_CONFIG_MAIN
 #include <catch2/catch.hpp>
 
-#include "harness/engine/isolation.hpp"
+#include "harness/exec/isolation.hpp"
 
 // Plug-in runs made in this test program are isolated in the real binary, as they are when a
 // user runs rotbench (whose main() names its own executable).

@@ -1,7 +1,7 @@
 // The metric table (harness/core/metrics.hpp) is the vocabulary of every run: whatever a run
 // of any kind records is in it, or is a scene's own metric.
 #include "harness/core/metrics.hpp"
-#include "harness/engine/run.hpp"
+#include "harness/exec/run.hpp"
 #include "harness/scenes/scene.hpp"
 
 #include <catch2/catch.hpp>

@@ -2,7 +2,7 @@
 // into directories that are new, empty or carry its manifest; never deletes or replaces a file
 // it did not write; refuses a second process writing into a directory in use; and starts
 // gnuplot without a shell, so any path works and none runs a command.
-#include "harness/io/output_dir.hpp"
+#include "harness/store/output_dir.hpp"
 #include "tests/cli_helpers.hpp"
 
 #include <catch2/catch.hpp>
@@ -114,7 +114,7 @@ TEST_CASE("outputs: a second process writing into a directory in use is refused"
         execv(argv[0], argv.data());
         _exit(127);
     }
-    while (!fs::exists(dir / "partial" / "plan")) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    while (!fs::exists(dir / "partial" / "command")) std::this_thread::sleep_for(std::chrono::milliseconds(5));
     const Cli second = cli(with(one_run, {"--out", dir.string(), "--overwrite"}));
     CHECK(second.status == 2);
     CHECK_THAT(second.err, Catch::Contains("is in use by another rotbench (process " + std::to_string(pid) + ")"));

@@ -1,5 +1,5 @@
 // Progress of the long verbs: counts, the item in flight, the time left; nothing when quiet.
-#include "harness/io/progress.hpp"
+#include "harness/store/progress.hpp"
 
 #include <catch2/catch.hpp>
 #include <sstream>

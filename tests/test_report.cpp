@@ -1,8 +1,8 @@
 // The report's first screen answers "which scheme, at what dt, at what cost"; its tables and
 // plots stay readable; its data files are typed.
 #include "cli_helpers.hpp"
-#include "harness/io/results_csv.hpp"
-#include "harness/io/stability_csv.hpp"
+#include "harness/store/results_csv.hpp"
+#include "harness/analysis/stability_csv.hpp"
 
 #include <catch2/catch.hpp>
 #include <cmath>

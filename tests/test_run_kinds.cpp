@@ -1,9 +1,10 @@
-// The kinds of run besides the trajectory (harness/engine/run_kinds.hpp): the reversal and
+// The kinds of run besides the trajectory (harness/exec/run_kinds.hpp): the reversal and
 // the stability search, made by the same engine (run_one) as every other run.
-#include "harness/analysis/stability.hpp"
+#include "harness/exec/stability.hpp"
 #include "harness/analysis/stability_study.hpp"
-#include "harness/engine/run.hpp"
-#include "harness/engine/sweep.hpp"
+#include "harness/exec/run.hpp"
+#include "harness/exec/executor.hpp"
+#include "harness/analysis/sweep_plan.hpp"
 
 #include <catch2/catch.hpp>
 #include <cmath>

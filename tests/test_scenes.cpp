@@ -1,8 +1,8 @@
 // Every scene against its reference engine, the engine against a second stepper, and
 // every registered scheme on every scene.
-#include "harness/engine/run.hpp"
+#include "harness/exec/run.hpp"
 #include "references/odeint_reference.hpp"
-#include "harness/io/reference_cache.hpp"
+#include "harness/store/reference_cache.hpp"
 #include "schemes/quaternion.hpp"
 
 #include "harness/scenes/contact_pair.hpp"

@@ -2,7 +2,7 @@
 // order with and without torque, exactness, momentum conservation. These tests hold each
 // scheme to its own claims, so a new scheme is tested by registering it.
 #include "harness/analysis/claims.hpp"
-#include "harness/engine/run.hpp"
+#include "harness/exec/run.hpp"
 #include "schemes/detail/free_rigid_body.hpp"
 #include "schemes/quaternion.hpp"
 #include "harness/analysis/expected_orders.hpp"

@@ -2,20 +2,27 @@
 // predictions of Peng et al. (seed 004). The findings are pinned so they cannot change
 // silently.
 #include "harness/scenes/contact_pair.hpp"
-#include "harness/analysis/stability.hpp"
+#include "harness/exec/stability.hpp"
 #include "harness/analysis/stability_study.hpp"
 #include "schemes/scheme.hpp"
 
 #include <catch2/catch.hpp>
+#include <sstream>
 #include <stdexcept>
 
 using namespace rotbench;
 
 namespace {
 
+std::vector<StabilityRow> rows_of(const std::vector<std::string>& scenes, const std::vector<std::string>& schemes,
+                                  const std::vector<double>& zetas, const std::vector<double>& omegas) {
+    std::ostringstream out, err;
+    Executor executor(out, err, {.jobs = 2, .quiet = true});
+    return stability_study(executor, scenes, schemes, zetas, omegas).rows;
+}
+
 const std::vector<StabilityRow>& study() {
-    static const auto rows =
-        stability_study({"sphere_pair", "ellipsoid_pair"}, {"direct", "munjiza_rk4", "zvw", "zvw_corrected"}, {0.0, 0.3}, {}, 2);
+    static const auto rows = rows_of({"sphere_pair", "ellipsoid_pair"}, {"direct", "munjiza_rk4", "zvw", "zvw_corrected"}, {0.0, 0.3}, {});
     return rows;
 }
 
@@ -86,7 +93,7 @@ TEST_CASE("the weak instability is rho - 1 ~ dt^2 in the linearisation") {
 }
 
 TEST_CASE("rotation-dominant (fast_spin, eq. 57): the limits scale as 1/w_max, and eq. 57 is safe for direct only", "[study]") {
-    const auto rows = stability_study({"fast_spin"}, {"direct", "munjiza_rk4", "zvw", "zvw_corrected"}, {}, {10.0, 100.0}, 2);
+    const auto rows = rows_of({"fast_spin"}, {"direct", "munjiza_rk4", "zvw", "zvw_corrected"}, {}, {10.0, 100.0});
     auto find = [&](const std::string& scheme, double w) -> const StabilityRow& {
         for (const auto& r : rows)
             if (r.scheme == scheme && r.omega_max == w) return r;
@@ -118,7 +125,7 @@ const RegisterScheme<ThrowsInPredict<>> throwing("test_stability_throws", "test 
 }  // namespace
 
 TEST_CASE("a scheme that throws is unstable at every dt in both analyses, and the study goes on") {
-    const auto rows = stability_study({"sphere_pair"}, {"test_stability_throws", "direct"}, {0.0}, {}, 2);
+    const auto rows = rows_of({"sphere_pair"}, {"test_stability_throws", "direct"}, {0.0}, {});
     REQUIRE(rows.size() == 2);
     CHECK(rows[0].dt_empirical == 0.0);
     CHECK(rows[0].dt_amplification == 0.0);

@@ -1,5 +1,5 @@
 // The seed's Table 1 (Irazabal et al., test case 1), reproduced entry by entry.
-#include "harness/engine/run.hpp"
+#include "harness/exec/run.hpp"
 #include "reports/seed_table1.hpp"
 #include "schemes/munjiza_rk4.hpp"
 

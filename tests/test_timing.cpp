@@ -1,6 +1,6 @@
 // How runs are timed and what they share: the timing sample and the shared references.
-#include "harness/engine/run.hpp"
-#include "harness/engine/shared_trajectory.hpp"
+#include "harness/exec/run.hpp"
+#include "harness/exec/shared_trajectory.hpp"
 
 #include <atomic>
 #include <catch2/catch.hpp>

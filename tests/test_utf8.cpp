@@ -1,6 +1,6 @@
-// The one UTF-8 decoder (harness/io/utf8.hpp) that the TOML reader and the reports' escaping
+// The one UTF-8 decoder (harness/store/utf8.hpp) that the TOML reader and the reports' escaping
 // share: the boundaries of RFC 3629's table, section 4, each side of every limit.
-#include "harness/io/utf8.hpp"
+#include "harness/store/utf8.hpp"
 
 #include <catch2/catch.hpp>
 #include <string>

@@ -2,11 +2,6 @@
 
 #include "harness/analysis/median.hpp"
 #include "harness/analysis/order_fit.hpp"
-#include "harness/analysis/stability.hpp"
-#include "harness/analysis/stability_study.hpp"
-#include "harness/engine/isolation.hpp"
-#include "harness/engine/parallel.hpp"
-#include "harness/engine/run.hpp"
 #include "harness/scenes/stability_probe.hpp"
 
 #include <algorithm>
@@ -28,24 +23,15 @@ struct Outcome {
     std::string why;
 };
 
-Outcome advise_one(const Scene& scene, const ParamOverrides& params, double t_end, double tolerance, const std::string& scheme,
-                   bool verify, int jobs) {
-    const auto& probe = dynamic_cast<const StabilityProbe&>(scene);
+// Each of the scheme's runs is a task of the executor: a plug-in's in its worker, so that one that
+// crashes or hangs is not recommended, with the reason, and the other schemes are still advised.
+Outcome advise_one(Executor& executor, const StabilityProbe& probe, const ParamOverrides& params, double t_end, double tolerance,
+                   const std::string& scheme, bool verify) {
     Outcome o;
     o.r.scheme = scheme;
-    // A plug-in's search and runs go to worker processes (harness/engine/isolation.hpp): one that
-    // crashes or hangs is not recommended, with the reason, and the other schemes are still advised.
-    const bool in_worker = isolated(scheme);
-    const IsolationLimits limits{0, isolation_memory(jobs)};
-    double limit = NAN;
-    if (!in_worker) {
-        const StabilityCriterion criterion = stability_criterion(probe);
-        limit = empirical_limit(scene, scheme, probe.predicted_limit(), criterion);
-    } else {
-        const RunResult search = run_isolated({scene_id, scheme, 0.0, t_end, params, RunKind::stability, false}, {}, limits);
-        if (!search.failure.empty()) return {false, o.r, "its stability search failed: " + search.failure};
-        limit = search.value(metric::dt_empirical);
-    }
+    const RunResult search = executor.run(RunSpec{scene_id, scheme, 0.0, t_end, params, RunKind::stability, false});
+    if (!search.failure.empty()) return {false, o.r, "its stability search failed: " + search.failure};
+    const double limit = search.value(metric::dt_empirical);
     o.r.dt_stability = limit;
     if (!(limit > 0)) return {false, o.r, "no stable dt found"};
     const double dt0 = advice_safety * (std::isfinite(limit) ? limit : probe.predicted_limit());
@@ -53,7 +39,7 @@ Outcome advise_one(const Scene& scene, const ParamOverrides& params, double t_en
     const auto run_at = [&](double dt, bool timed) {
         RunSpec spec{scene_id, scheme, dt, t_end, params};
         spec.timed = timed;
-        return in_worker ? run_isolated(spec, {}, limits) : run_one(spec);
+        return executor.run(spec);
     };
     std::vector<RunResult> ladder;
     std::vector<OrderPoint> points;
@@ -66,7 +52,7 @@ Outcome advise_one(const Scene& scene, const ParamOverrides& params, double t_en
     };
     for (int k = 0; k < advice_ladder_rungs; ++k) add_rung(dt0 / std::pow(2.0, k));
     // A blow-up is the scheme's instability (it records its fail_step); anything else crashed, hung or threw.
-    if (in_worker && !ladder.front().failure.empty() && !ladder.front().has(metric::fail_step))
+    if (!ladder.front().failure.empty() && !ladder.front().has(metric::fail_step))
         return {false, o.r, "its run failed: " + ladder.front().failure};
     if (!stable(ladder.front()))  // the search's horizon is the criterion's; a run may still fail
         return {false, o.r, fmt::format("unstable at {:.3g} s below its measured limit {:.3g} s", dt0, limit)};
@@ -140,16 +126,13 @@ ParamOverrides particle_params(const Particle& p) {
     return params;
 }
 
-Advice advise(const Particle& particle, double tolerance, const std::vector<std::string>& schemes, bool verify, int jobs) {
+Advice advise(Executor& executor, const Particle& particle, double tolerance, const std::vector<std::string>& schemes, bool verify) {
     Advice a{particle, tolerance, particle.t_end, 0, 0, particle_params(particle), {}, {}};
     const auto probe_scene = make_scene(scene_id, a.params);
     const auto& probe = dynamic_cast<const StabilityProbe&>(*probe_scene);
     a.period = probe.period();
     a.dt_peng = probe.predicted_limit();
     if (a.t_end == 0) a.t_end = advice_default_periods * a.period;
-    ParamOverrides with_t_end = a.params;
-    with_t_end.push_back({"t_end", {a.t_end}});
-    const auto scene = make_scene(scene_id, with_t_end);
 
     std::vector<std::string> sound;
     for (const auto& s : schemes) {
@@ -157,7 +140,7 @@ Advice advise(const Particle& particle, double tolerance, const std::vector<std:
         else a.not_recommended.push_back({s, "a control (sound = false): never recommended"});
     }
     std::vector<Outcome> outcomes(sound.size());
-    parallel_for(sound.size(), jobs, [&](std::size_t i) { outcomes[i] = advise_one(*scene, a.params, a.t_end, tolerance, sound[i], verify, jobs); });
+    executor.for_each(sound.size(), [&](std::size_t i) { outcomes[i] = advise_one(executor, probe, a.params, a.t_end, tolerance, sound[i], verify); });
     for (const auto& o : outcomes) {
         if (o.recommended) a.recommendations.push_back(o.r);
         else a.not_recommended.push_back({o.r.scheme, o.why});

@@ -4,6 +4,7 @@
 // reference for the observed order, and optionally a run at the recommended dt to verify it.
 #pragma once
 
+#include "harness/exec/executor.hpp"
 #include "harness/scenes/params.hpp"
 
 #include <Eigen/Core>
@@ -61,8 +62,9 @@ struct Advice {
 // t_end shorter than one period of the contact).
 ParamOverrides particle_params(const Particle& p);
 
-// Every scheme of `schemes` that is sound, in parallel over `jobs`; the same numbers whatever
-// `jobs` is (timings aside).
-Advice advise(const Particle& particle, double tolerance, const std::vector<std::string>& schemes, bool verify, int jobs);
+// Every scheme of `schemes` that is sound, in parallel over the executor's jobs; the same numbers
+// whatever their number is (timings aside). Interrupted: the executor's signal() is set, and the
+// advice is incomplete.
+Advice advise(Executor& executor, const Particle& particle, double tolerance, const std::vector<std::string>& schemes, bool verify);
 
 }  // namespace rotbench

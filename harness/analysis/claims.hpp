@@ -4,7 +4,7 @@
 #pragma once
 
 #include "harness/analysis/result_set.hpp"
-#include "harness/engine/run.hpp"
+#include "harness/exec/run.hpp"
 
 #include <cmath>
 #include <limits>

@@ -3,7 +3,7 @@
 // between schemes can be set against the scatter between equally valid runs.
 #pragma once
 
-#include "harness/engine/run.hpp"
+#include "harness/exec/run.hpp"
 
 #include <optional>
 #include <string>

@@ -1,9 +1,9 @@
 // Observed orders of every (scene, scheme, error metric) in a set of results:
-// (the rows of orders.csv and local_orders.csv, harness/io/orders_csv.hpp).
+// (the rows of orders.csv and local_orders.csv, harness/analysis/orders_csv.hpp).
 #pragma once
 
 #include "harness/analysis/order_fit.hpp"
-#include "harness/engine/run.hpp"
+#include "harness/exec/run.hpp"
 
 #include <string>
 #include <vector>

@@ -2,7 +2,7 @@
 // scenes, so that reports only consume it: they build no scene and read no registry.
 #pragma once
 
-#include "harness/engine/run.hpp"
+#include "harness/exec/run.hpp"
 #include "harness/scenes/scene.hpp"
 #include "schemes/scheme.hpp"
 

@@ -2,7 +2,7 @@
 // (the gate's exactness claim, orders.csv's `exact`, the report's "exact").
 #pragma once
 
-#include "harness/engine/run.hpp"
+#include "harness/exec/run.hpp"
 
 #include <cmath>
 #include <limits>

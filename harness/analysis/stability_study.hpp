@@ -1,11 +1,11 @@
 // `rotbench stability`: every selected scheme on every selected contact scene and damping
-// ratio; the measured limit, the eigenvalue limit and Peng et al.'s prediction.
+// ratio; the measured limit, the eigenvalue limit and Peng et al.'s prediction, and the
+// spectral radius of each scheme's step map against dt. Every scheme's work is a run
+// (kinds stability, amplification, spectral) made by the executor.
 #pragma once
 
-#include "harness/analysis/stability.hpp"
-#include "harness/io/progress.hpp"
+#include "harness/exec/executor.hpp"
 
-#include <cstddef>
 #include <string>
 #include <utility>
 #include <vector>
@@ -29,42 +29,27 @@ struct StabilityRow {
 //   failed the case did not finish (StabilityRow::failure).
 std::string stability_kind(const StabilityRow& row);
 
-// Contact scenes run once per zeta, fast_spin once per omega_max; the eigenvalue limit is
-// NaN where the scene's state is not an equilibrium at rest.
 // InputError unless every id is a scene with a stability probe (the valid ones listed).
 void check_stability_scenes(const std::vector<std::string>& scenes);
 
-// A plug-in scheme's case runs in a worker process under these limits (harness/engine/isolation.hpp):
-// one that crashes, hangs or exhausts memory fails its own case, the rest go on.
-struct StabilityLimits {
-    double seconds = 600;      // wall time of one case (or of one scheme's spectral curve)
-    std::size_t megabytes = 0; // 0: isolation_memory(jobs)
-};
-
-// `progress`, when given, hears of every case as it starts and ends (harness/io/progress.hpp).
-std::vector<StabilityRow> stability_study(const std::vector<std::string>& scenes, const std::vector<std::string>& schemes,
-                                          const std::vector<double>& zetas, const std::vector<double>& omegas, int jobs,
-                                          Progress* progress = nullptr, const StabilityLimits& limits = {});
-// How many cases stability_study runs for these inputs (progress counts them).
-std::size_t stability_case_count(const std::vector<std::string>& scenes, const std::vector<std::string>& schemes,
-                                 const std::vector<double>& zetas, const std::vector<double>& omegas);
-
-// The spectral radius of each scheme's step map against dt, undamped, for each contact scene
-// among `scenes` that can be linearised at rest: 41 steps from 1/30 to 3 times Peng's prediction.
+// The spectral radius of a scheme's step map against dt, undamped, on a contact scene that
+// can be linearised at rest (harness/exec/run_kinds.hpp, run_spectral).
 struct SpectralCurve {
     std::string scene, scheme;
     double dt_peng = 0;
-    std::vector<std::pair<double, double>> points;  // (dt, rho)
+    std::vector<std::pair<double, double>> points;  // (dt, rho); none when the run failed
     std::string failure;
 };
-// A curve whose scheme failed in its worker has no points and names why.
-std::vector<SpectralCurve> spectral_radius_curves(const std::vector<std::string>& scenes, const std::vector<std::string>& schemes,
-                                                  const StabilityLimits& limits = {});
 
-// What the worker of one case does (`rotbench __stability`), in process: the row's limits,
-// or one scheme's spectral curve on a scene, each written as text for run_worker's caller.
-void measure_stability_case(StabilityRow& row);
-std::string stability_case_text(const StabilityRow& row);
-std::string spectral_curve_text(const std::string& scene, const std::string& scheme);
+struct StabilityStudy {
+    std::vector<StabilityRow> rows;
+    std::vector<SpectralCurve> curves;
+};
+
+// Contact scenes run once per zeta, fast_spin once per omega_max; the eigenvalue limit is
+// NaN where the scene's state is not an equilibrium at rest. Interrupted: the executor's
+// signal() is set and the study is incomplete.
+StabilityStudy stability_study(Executor& executor, const std::vector<std::string>& scenes, const std::vector<std::string>& schemes,
+                               const std::vector<double>& zetas, const std::vector<double>& omegas);
 
 }  // namespace rotbench

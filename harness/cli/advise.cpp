@@ -1,9 +1,10 @@
 // `rotbench advise`: which scheme, at what dt, for the user's own particle and contact.
 #include "harness/analysis/advice.hpp"
 #include "harness/cli/outputs.hpp"
+#include "harness/cli/sweep_command.hpp"
 #include "harness/cli/verb.hpp"
-#include "harness/engine/parallel.hpp"
-#include "harness/io/parse.hpp"
+#include "harness/exec/parallel.hpp"
+#include "harness/store/parse.hpp"
 #include "reports/advice_report.hpp"
 #include "schemes/scheme.hpp"
 
@@ -45,9 +46,16 @@ public:
         const auto schemes = schemes_.empty() ? SchemeRegistry::instance().ids()
                                               : parse_id_list(schemes_, SchemeRegistry::instance(), "scheme");
         particle_params(p);  // the particle checked before the directory is opened
-        const OutputDir dir = OutputDir::open(out_, {"advise", "advice.json", {"advice.json"}, overwrite_});
-        const Advice advice = advise(p, tolerance, schemes, verify_, jobs_);
+        const OutputDir dir = OutputDir::open(how.resuming ? *how.resuming : std::filesystem::path(out_),
+                                              {"advise", "advice.json", {"advice.json"}, overwrite_, how.resuming.has_value()});
+        Advice advice;
+        {
+            Executor executor = make_executor(how, &dir, {.jobs = jobs_, .quiet = true, .verb = "advise"});
+            advice = advise(executor, p, tolerance, schemes, verify_);
+            if (executor.signal()) return executor.interrupted();
+        }
         dir.write("advice.json", advice_json(advice));
+        Journal::discard(dir.path());
         how.out << advice_table(advice) << "wrote " << (dir.path() / "advice.json").string() << "\n";
         return 0;
     }

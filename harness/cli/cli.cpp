@@ -1,8 +1,8 @@
 #include "harness/cli/cli.hpp"
 
 #include "harness/cli/verb.hpp"
-#include "harness/io/output_files.hpp"
-#include "harness/io/plugin.hpp"
+#include "harness/store/output_files.hpp"
+#include "harness/store/plugin.hpp"
 
 #include "build_info.hpp"
 

@@ -3,10 +3,10 @@
 #include "harness/cli/outputs.hpp"
 #include "harness/cli/verb.hpp"
 #include "harness/gate/compare.hpp"
-#include "harness/io/output_dir.hpp"
-#include "harness/io/output_files.hpp"
-#include "harness/io/parse.hpp"
-#include "harness/io/results_csv.hpp"
+#include "harness/store/output_dir.hpp"
+#include "harness/store/output_files.hpp"
+#include "harness/store/parse.hpp"
+#include "harness/store/results_csv.hpp"
 #include "reports/gate_report.hpp"
 
 namespace rotbench {

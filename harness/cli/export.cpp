@@ -1,12 +1,13 @@
 // `rotbench reference` and `rotbench trajectory`: a scene's reference trajectory, or one
-// scheme's run on it, as CSV (harness/engine/export.hpp gives the columns).
+// scheme's run on it, as CSV (harness/exec/export.hpp gives the columns).
 #include "harness/cli/verb.hpp"
-#include "harness/engine/export.hpp"
-#include "harness/engine/sweep.hpp"
-#include "harness/io/config.hpp"
-#include "harness/io/output_dir.hpp"
-#include "harness/io/output_files.hpp"
-#include "harness/io/parse.hpp"
+#include "harness/exec/executor.hpp"
+#include "harness/exec/export.hpp"
+#include "harness/analysis/sweep_plan.hpp"
+#include "harness/cli/config.hpp"
+#include "harness/store/output_dir.hpp"
+#include "harness/store/output_files.hpp"
+#include "harness/store/parse.hpp"
 #include "schemes/scheme.hpp"
 
 #include <filesystem>
@@ -29,8 +30,8 @@ struct ExportOptions {
         cmd.add_flag("--overwrite", overwrite, "replace an --out file that an earlier export wrote");
     }
 
-    // The scene, with --t-end and --set applied (--set takes KEY=VALUE or SCENE.KEY=VALUE).
-    std::unique_ptr<Scene> make() const {
+    // --set (KEY=VALUE or SCENE.KEY=VALUE).
+    ParamOverrides overrides() const {
         SweepSpec spec;
         for (const auto& s : settings) add_setting(spec, s.find('.') < s.find('=') ? s : scene + "." + s);
         ParamOverrides overrides;
@@ -38,8 +39,13 @@ struct ExportOptions {
             if (scene_id != scene) throw InputError("--set names scene '" + scene_id + "', but --scene is '" + scene + "'");
             overrides = list;
         }
-        if (!t_end.empty()) overrides.push_back({"t_end", {parse_positive(t_end, "--t-end")}});
-        return make_scene(scene, overrides);
+        return overrides;
+    }
+    // The scene, with --t-end and --set applied.
+    std::unique_ptr<Scene> make() const {
+        ParamOverrides with_t_end = overrides();
+        if (!t_end.empty()) with_t_end.push_back({"t_end", {parse_positive(t_end, "--t-end")}});
+        return make_scene(scene, with_t_end);
     }
 
     // Before the work: the file must be new, or one an earlier export wrote and --overwrite.
@@ -47,7 +53,12 @@ struct ExportOptions {
         if (samples < 1) throw InputError("--samples must be at least 1");
         check_output_file(out, "--out", overwrite, trajectory_header);
     }
-    void write(const std::string& csv, std::ostream& log) const {
+    void write(const std::vector<std::vector<double>>& rows, std::ostream& log) const {
+        std::string csv = std::string(trajectory_header) + "\n";
+        for (const auto& row : rows) {
+            for (std::size_t k = 0; k < row.size(); ++k) csv += (k ? "," : "") + format_number(row[k]);
+            csv += "\n";
+        }
         write_file_atomically(out, csv);
         log << "wrote " << out << "\n";
     }
@@ -59,7 +70,7 @@ public:
     int run(const Invocation& how) override {
         const auto scene = o_.make();
         o_.check();
-        o_.write(reference_csv(*scene, o_.samples), how.out);
+        o_.write(reference_states(*scene, o_.samples), how.out);
         return 0;
     }
 
@@ -79,10 +90,19 @@ public:
         const double dt = parse_positive(o_.dt, "--dt");
         const auto scene = o_.make();
         o_.check();
-        std::string stopped;
-        o_.write(scheme_trajectory_csv(*scene, o_.scheme, dt, o_.samples, &stopped), how.out);
-        if (!stopped.empty())
-            how.err << "rotbench: " << o_.scheme << " " << stopped << "; " << o_.out << " holds the trajectory up to there\n";
+        // A run like any other: a plug-in's in its worker, so that a crash is its failure, not rotbench's.
+        Executor executor(how.out, how.err, {.run = {.measure_time = false, .series_samples = o_.samples}, .quiet = true, .verb = "trajectory"});
+        RunSpec task{o_.scene, o_.scheme, dt, scene->t_end(), o_.overrides()};
+        task.kind = RunKind::states;
+        const RunResult r = executor.run(task);
+        if (r.interrupted) return executor.interrupted();
+        if (r.series.empty()) {
+            how.err << "rotbench: " << o_.scheme << " " << r.failure << "; nothing written\n";
+            return 1;
+        }
+        o_.write(r.series, how.out);
+        if (!r.failure.empty())
+            how.err << "rotbench: " << o_.scheme << " " << r.failure << "; " << o_.out << " holds the trajectory up to there\n";
         return 0;
     }
 

@@ -4,14 +4,14 @@
 #include "harness/cli/outputs.hpp"
 #include "harness/cli/sweep_command.hpp"
 #include "harness/cli/verb.hpp"
-#include "harness/engine/parallel.hpp"
+#include "harness/exec/parallel.hpp"
 #include "harness/gate/compare.hpp"
 #include "harness/gate/gate.hpp"
-#include "harness/io/journal.hpp"
-#include "harness/io/output_dir.hpp"
-#include "harness/io/parse.hpp"
-#include "harness/io/output_files.hpp"
-#include "harness/io/results_csv.hpp"
+#include "harness/store/journal.hpp"
+#include "harness/store/output_dir.hpp"
+#include "harness/store/parse.hpp"
+#include "harness/store/output_files.hpp"
+#include "harness/store/results_csv.hpp"
 #include "reports/gate_report.hpp"
 
 #include <cstdlib>
@@ -87,16 +87,16 @@ public:
                     runs[i].spec.kind != plan.runs[i].kind || runs[i].spec.dt != plan.runs[i].dt)
                     throw InputError("--results " + results_ + ": run " + std::to_string(i + 1) + " is not the one this gate makes there");
         } else {
-            RunOptions options{.measure_time = true};
-            isolation_.apply(options);
-            const SweepOutcome outcome = sweep_plan(slice, dir ? &*dir : nullptr, how, options, jobs_, true);
-            if (outcome.exit_status) return outcome.exit_status;
+            ExecOptions options{.jobs = jobs_, .timed_alone = true, .verb = "gate"};
+            isolation_.apply(options.run);
+            Executor executor = make_executor(how, dir ? &*dir : nullptr, options);
+            runs = executor.run(slice.runs);
+            if (executor.signal()) return executor.interrupted();
             if (slice.shard) {
-                write_slice(*dir, slice, outcome.results, how.out);
+                write_slice(*dir, slice, runs, how.out);
                 Journal::discard(dir->path());
                 return 0;
             }
-            runs = outcome.results;
         }
 
         GateResult result = judge_gate(file, plan, std::move(runs));

@@ -1,7 +1,7 @@
 // `rotbench merge DIR... --out OUT`: the outputs of the unsharded run from its N slices.
 #include "harness/cli/outputs.hpp"
 #include "harness/cli/verb.hpp"
-#include "harness/io/shard.hpp"
+#include "harness/store/shard.hpp"
 
 namespace rotbench {
 namespace {

@@ -3,13 +3,13 @@
 #include "harness/analysis/ensemble.hpp"
 #include "harness/analysis/orders.hpp"
 #include "harness/analysis/result_set.hpp"
-#include "harness/engine/parallel.hpp"
-#include "harness/io/ensemble_csv.hpp"
-#include "harness/io/orders_csv.hpp"
-#include "harness/io/output_files.hpp"
-#include "harness/io/parse.hpp"
-#include "harness/io/results_csv.hpp"
-#include "harness/io/stability_csv.hpp"
+#include "harness/exec/parallel.hpp"
+#include "harness/analysis/ensemble_csv.hpp"
+#include "harness/analysis/orders_csv.hpp"
+#include "harness/store/output_files.hpp"
+#include "harness/store/parse.hpp"
+#include "harness/store/results_csv.hpp"
+#include "harness/analysis/stability_csv.hpp"
 #include "reports/markdown_report.hpp"
 
 #include <algorithm>
@@ -18,7 +18,7 @@
 namespace rotbench {
 namespace fs = std::filesystem;
 
-Executor all_cores() {
+ParallelWork all_cores() {
     return [](std::size_t count, const std::function<void(std::size_t)>& work) { parallel_for(count, core_count(), work); };
 }
 

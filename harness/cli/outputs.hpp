@@ -1,9 +1,9 @@
 // What several verbs share: the output directory, and the outputs of a set of runs.
 #pragma once
 
-#include "harness/engine/run.hpp"
-#include "harness/io/output_dir.hpp"
-#include "reports/executor.hpp"
+#include "harness/exec/run.hpp"
+#include "harness/store/output_dir.hpp"
+#include "reports/parallel_work.hpp"
 #include "reports/markdown_report.hpp"
 
 #include <CLI/CLI.hpp>
@@ -23,7 +23,7 @@ inline const std::vector<std::string> run_files = {"runs.jsonl", "results.csv", 
                                                    "ensemble.csv", "report.md"};
 
 // The report's plots drawn on every core.
-Executor all_cores();
+ParallelWork all_cores();
 
 // --tolerance (repeatable): the report's tolerances on the relative angular-velocity error.
 void add_tolerance_option(CLI::App& command, std::vector<std::string>& texts);

@@ -2,8 +2,8 @@
 #include "harness/analysis/result_set.hpp"
 #include "harness/cli/outputs.hpp"
 #include "harness/cli/verb.hpp"
-#include "harness/io/output_files.hpp"
-#include "harness/io/results_csv.hpp"
+#include "harness/store/output_files.hpp"
+#include "harness/store/results_csv.hpp"
 #include "reports/markdown_report.hpp"
 
 namespace rotbench {

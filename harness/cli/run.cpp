@@ -1,19 +1,18 @@
 // `rotbench run`: the sweep from the options, its outputs, and the journal that lets an
-// interrupted run be resumed (harness/io/journal.hpp).
+// interrupted run be resumed (harness/store/journal.hpp).
 #include "harness/cli/outputs.hpp"
 #include "harness/cli/sweep_command.hpp"
 #include "harness/cli/verb.hpp"
-#include "harness/engine/interrupt.hpp"
-#include "harness/engine/parallel.hpp"
-#include "harness/engine/sweep.hpp"
-#include "harness/io/config.hpp"
-#include "harness/io/journal.hpp"
-#include "harness/io/output_dir.hpp"
-#include "harness/io/output_files.hpp"
-#include "harness/io/parse.hpp"
-#include "harness/io/results_csv.hpp"
-#include "harness/io/series_csv.hpp"
-#include "harness/io/shard.hpp"
+#include "harness/exec/parallel.hpp"
+#include "harness/analysis/sweep_plan.hpp"
+#include "harness/cli/config.hpp"
+#include "harness/store/journal.hpp"
+#include "harness/store/output_dir.hpp"
+#include "harness/store/output_files.hpp"
+#include "harness/store/parse.hpp"
+#include "harness/store/results_csv.hpp"
+#include "harness/store/series_csv.hpp"
+#include "harness/store/shard.hpp"
 
 #include <algorithm>
 #include <fmt/format.h>
@@ -99,13 +98,14 @@ int run_sweep_command(const RunOptionsText& o, const Invocation& how) {
                                           {"run", "results.csv", slice.shard ? slice_files : run_files, o.overwrite,
                                            how.resuming.has_value()});
     const ReportOptions report = report_options(o.tolerances, dir.path());  // a stability study already in --out
-    RunOptions options;
-    options.series_samples = o.energy_series;
-    o.isolation.apply(options);
-    const SweepOutcome outcome = sweep_plan(slice, &dir, how, options, o.jobs, false, o.quiet);
-    if (outcome.exit_status) return outcome.exit_status;
-    if (!slice.shard) write_outputs(dir, outcome.results, how.command_line, report, how.out);
-    else write_slice(dir, slice, outcome.results, how.out);  // no orders or report: they need every run
+    ExecOptions options{.jobs = o.jobs, .quiet = o.quiet};
+    options.run.series_samples = o.energy_series;
+    o.isolation.apply(options.run);
+    Executor executor = make_executor(how, &dir, options);
+    const std::vector<RunResult> results = executor.run(slice.runs);
+    if (executor.signal()) return executor.interrupted();
+    if (!slice.shard) write_outputs(dir, results, how.command_line, report, how.out);
+    else write_slice(dir, slice, results, how.out);  // no orders or report: they need every run
     Journal::discard(dir.path());
     return 0;
 }

@@ -5,18 +5,18 @@
 #include "harness/cli/outputs.hpp"
 #include "harness/cli/sweep_command.hpp"
 #include "harness/cli/verb.hpp"
-#include "harness/engine/interrupt.hpp"
-#include "harness/engine/parallel.hpp"
-#include "harness/io/output_files.hpp"
-#include "harness/io/parse.hpp"
-#include "harness/io/progress.hpp"
-#include "harness/io/stability_csv.hpp"
+#include "harness/exec/machine.hpp"
+#include "harness/store/output_files.hpp"
+#include "harness/store/parse.hpp"
+#include "harness/analysis/stability_csv.hpp"
 #include "harness/scenes/scene.hpp"
 #include "reports/stability_report.hpp"
 #include "schemes/scheme.hpp"
 
 namespace rotbench {
 namespace {
+
+namespace fs = std::filesystem;
 
 class StabilityVerb final : public Verb {
 public:
@@ -29,7 +29,7 @@ public:
         command.add_option("--jobs", jobs_, "cases in parallel")->check(CLI::Range(1, max_jobs));
         command.add_flag("--overwrite", overwrite_, "replace results already in --out");
         command.add_flag("--quiet", quiet_, "no progress on stderr");
-        isolation_.add_to(command, "600 s for a case");
+        isolation_.add_to(command, "600 s for a search");
     }
     int run(const Invocation& how) override {
         const auto scenes = parse_id_list(scenes_, SceneRegistry::instance(), "scene");
@@ -38,30 +38,18 @@ public:
         const auto zetas = parse_nonnegative_list(zetas_, "--zeta");
         const auto omegas = parse_positive_list(omegas_, "--omega-max");
         check_stability_scenes(scenes);
-        RunOptions run_options;
-        isolation_.apply(run_options);
-        StabilityLimits limits;  // a plug-in's case in a worker: its default time limit is StabilityLimits's
-        if (run_options.run_timeout > 0) limits.seconds = run_options.run_timeout;
-        limits.megabytes = run_options.run_memory_mb;
-        const OutputDir dir = OutputDir::open(out_, {"stability", "stability.csv", {"stability.csv", "stability_spin.csv", "stability.md"},
-                                                     overwrite_});
-        std::vector<StabilityRow> rows;
-        std::vector<SpectralCurve> curves;
+        const OutputDir dir = OutputDir::open(how.resuming ? *how.resuming : fs::path(out_),
+                                              {"stability", "stability.csv", {"stability.csv", "stability_spin.csv", "stability.md"},
+                                               overwrite_, how.resuming.has_value()});
+        ExecOptions options{.jobs = jobs_, .quiet = quiet_, .verb = "stability"};
+        isolation_.apply(options.run);
+        StabilityStudy study;
         {
-            // A signal stops the cases and kills the workers of plug-in schemes; nothing is written.
-            const InterruptGuard guard;
-            {  // the progress's status line is cleared when it goes, before the last line
-                // Every case weighs the same: each searches its limit over about as many steps.
-                Progress progress(how.err, Progress::mode_for(how.err, quiet_), "stability",
-                                  std::vector<double>(stability_case_count(scenes, schemes, zetas, omegas), 1.0));
-                rows = stability_study(scenes, schemes, zetas, omegas, jobs_, &progress, limits);
-            }
-            if (!interrupt_signal()) curves = spectral_radius_curves(scenes, schemes, limits);
-            if (const int signal = interrupt_signal()) {
-                how.err << "rotbench: stability interrupted; nothing written\n";
-                return signal > 0 ? 128 + signal : 1;
-            }
+            Executor executor = make_executor(how, &dir, options);
+            study = stability_study(executor, scenes, schemes, zetas, omegas);
+            if (executor.signal()) return executor.interrupted();
         }
+        const auto& [rows, curves] = study;
         dir.write("stability.csv", stability_csv(rows));
         dir.write("stability_spin.csv", stability_spin_csv(rows));
         ResultSet families;  // the schemes' families, for the plots' panels
@@ -69,6 +57,7 @@ public:
         const std::string section = stability_section(rows, families, dir);
         dir.write("stability.md", "# rotbench stability\n\nCommand: `" + how.command_line + "`\n\n" + section +
                                       spectral_radius_plots(curves, families, dir));
+        Journal::discard(dir.path());
         how.out << "wrote " << (dir.path() / "stability.csv").string() << " and " << (dir.path() / "stability.md").string() << "\n";
         return 0;
     }

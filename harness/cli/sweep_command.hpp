@@ -1,12 +1,13 @@
-// What the verbs that run a plan share (run, gate): slicing it into shards, running it
-// through the journal of its output directory (so that a signal or a kill loses at most the
-// runs in flight, and `rotbench run --resume DIR` finishes it), and the files of a slice.
+// What the verbs that make runs share (run, gate, stability, advise): slicing a plan into
+// shards, an executor that journals into the output directory (so that a signal or a kill
+// loses at most the runs in flight, and `rotbench run --resume DIR` finishes the command), the
+// run limits' options, and the files of a slice.
 #pragma once
 
 #include "harness/cli/verb.hpp"
-#include "harness/engine/run.hpp"
-#include "harness/io/output_dir.hpp"
-#include "harness/io/shard.hpp"
+#include "harness/exec/executor.hpp"
+#include "harness/store/output_dir.hpp"
+#include "harness/store/shard.hpp"
 
 #include <filesystem>
 #include <optional>
@@ -25,11 +26,6 @@ struct PlanSlice {
 };
 PlanSlice slice_plan(std::vector<RunSpec> plan, const std::string& shard_text);
 
-struct SweepOutcome {
-    std::vector<RunResult> results;  // in the slice's order, every run (when not interrupted)
-    int exit_status = 0;             // 128 + signal when SIGINT or SIGTERM cut the sweep short
-};
-
 // --run-timeout and --run-memory, the limits of a plug-in's run in its worker, as given.
 struct IsolationOptions {
     std::string run_timeout;
@@ -38,15 +34,9 @@ struct IsolationOptions {
     void apply(RunOptions& options) const;  // InputError for a bad --run-timeout
 };
 
-// Runs the slice, `jobs` at a time, with progress on how.err (harness/io/progress.hpp) and a
-// line per failed run on how.out, none of either when `quiet`. With a directory
-// every finished run goes to its journal (DIR/partial) first, and a resumed invocation
-// (how.resuming) runs only what is missing. `timed_alone`: the runs that are timed go last,
-// one at a time, so that they do not compete for the cores.
-// A file that cannot be written (a full disk) stops the sweep: the runs in flight finish, the
-// finished ones are kept in the journal, and the OutputError is rethrown.
-SweepOutcome sweep_plan(const PlanSlice& slice, const OutputDir* dir, const Invocation& how, const RunOptions& options, int jobs,
-                        bool timed_alone, bool quiet = false);
+// The executor of a command that writes into `dir` (none: no --out): its runs are journaled
+// there, and found there again when the command is resumed (how.resuming).
+Executor make_executor(const Invocation& how, const OutputDir* dir, ExecOptions options);
 
 // A slice's files for `rotbench merge`: results.csv, runs.csv, the energy series, shard.csv.
 inline const std::vector<std::string> slice_files = {"runs.jsonl", "results.csv", "runs.csv", "shard.csv"};

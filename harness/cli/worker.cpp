@@ -1,9 +1,9 @@
-// `rotbench __run`: the worker of an isolated run (harness/engine/isolation.hpp). Not for
+// `rotbench __run`: the worker of an isolated run (harness/exec/isolation.hpp). Not for
 // users: rotbench starts it with the run's spec and reads the run back from its output.
 #include "harness/cli/verb.hpp"
-#include "harness/engine/interrupt.hpp"
-#include "harness/engine/run.hpp"
-#include "harness/io/run_record.hpp"
+#include "harness/exec/interrupt.hpp"
+#include "harness/exec/run.hpp"
+#include "harness/store/run_record.hpp"
 
 namespace rotbench {
 namespace {

@@ -60,6 +60,8 @@ const std::vector<MetricInfo>& metric_table() {
         {.name = metric::dt_empirical, .unit = "s", .kind = K::stability},
         {.name = metric::dt_peng, .unit = "s", .kind = K::stability},
         {.name = metric::stability_ratio, .kind = K::stability},
+        {.name = metric::dt_amplification, .unit = "s", .kind = K::stability},
+        {.name = metric::unstable_at_every_dt, .kind = K::flag},
         {.name = metric::ensemble_size, .kind = K::ensemble},
         {.name = metric::ensemble_failed, .kind = K::ensemble},
     };

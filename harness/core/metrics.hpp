@@ -42,6 +42,8 @@ ROTBENCH_METRIC(reversal_omega)
 ROTBENCH_METRIC(dt_empirical)
 ROTBENCH_METRIC(dt_peng)
 ROTBENCH_METRIC(stability_ratio)
+ROTBENCH_METRIC(dt_amplification)
+ROTBENCH_METRIC(unstable_at_every_dt)
 ROTBENCH_METRIC(ensemble_size)
 ROTBENCH_METRIC(ensemble_failed)
 #undef ROTBENCH_METRIC

@@ -4,8 +4,8 @@
 #include "harness/analysis/mann_whitney.hpp"
 #include "harness/analysis/order_fit.hpp"
 #include "harness/analysis/orders.hpp"
-#include "harness/io/csv.hpp"
-#include "harness/io/output_files.hpp"
+#include "harness/store/csv.hpp"
+#include "harness/store/output_files.hpp"
 
 #include <algorithm>
 #include <cmath>

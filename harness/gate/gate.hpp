@@ -3,7 +3,7 @@
 // (harness/gate/judge.hpp).
 #pragma once
 
-#include "harness/engine/run.hpp"
+#include "harness/exec/run.hpp"
 #include "harness/gate/gate_file.hpp"
 
 #include <cstddef>

@@ -1,7 +1,7 @@
 #include "harness/gate/gate_file.hpp"
 
 #include "harness/core/metrics.hpp"
-#include "harness/io/toml_input.hpp"
+#include "harness/store/toml_input.hpp"
 #include "harness/scenes/scene.hpp"
 #include "harness/scenes/stability_probe.hpp"
 #include "schemes/scheme.hpp"

@@ -1,4 +1,4 @@
-// What a scene of the stability study states about itself (harness/analysis/stability.hpp
+// What a scene of the stability study states about itself (harness/exec/stability.hpp
 // measures the limits it is compared with).
 #pragma once
 

@@ -1,9 +1,9 @@
 // libFuzzer target: the parsers of option values — number lists (--dt, --zeta), id lists
 // (--scenes, --schemes), --shard K/N, and --set SCENE.KEY=VALUE followed by the plan of the
 // sweep it sets up (the scene checks the value).
-#include "harness/io/config.hpp"
-#include "harness/io/parse.hpp"
-#include "harness/io/shard.hpp"
+#include "harness/cli/config.hpp"
+#include "harness/store/parse.hpp"
+#include "harness/store/shard.hpp"
 #include "tests/fuzz/fuzz_input.hpp"
 
 using namespace rotbench;

@@ -1,6 +1,6 @@
 // libFuzzer target: the TOML run configuration (harness/config.cpp), then the sweep it
 // describes planned (scene parameters checked by the scenes), as `rotbench run --config`.
-#include "harness/io/config.hpp"
+#include "harness/cli/config.hpp"
 #include "tests/fuzz/fuzz_input.hpp"
 
 using namespace rotbench;

@@ -1,7 +1,7 @@
-// libFuzzer target: the reference cache's decoder (harness/io/reference_cache.hpp), which reads
+// libFuzzer target: the reference cache's decoder (harness/store/reference_cache.hpp), which reads
 // files from a shared cache directory that anything may have damaged. Every input must give a
 // trajectory whose size matches its body count, or none; never a crash or a huge allocation.
-#include "harness/io/reference_cache.hpp"
+#include "harness/store/reference_cache.hpp"
 #include "tests/fuzz/fuzz_input.hpp"
 
 using namespace rotbench;

@@ -1,8 +1,8 @@
 // libFuzzer target: the reader of rotbench's run store, which a user may hand back edited, cut
 // or forged (`report DIR`, `merge`, `compare`, `gate --results`, `run --resume`), and which an
 // isolated worker's output is read with: runs.jsonl and the journal's records.
-#include "harness/io/results_csv.hpp"
-#include "harness/io/run_record.hpp"
+#include "harness/store/results_csv.hpp"
+#include "harness/store/run_record.hpp"
 #include "tests/fuzz/fuzz_input.hpp"
 
 using namespace rotbench;

@@ -1,0 +1,214 @@
+#include "harness/exec/isolation.hpp"
+
+#include "harness/exec/interrupt.hpp"
+#include "harness/exec/machine.hpp"
+#include "harness/store/csv.hpp"
+#include "harness/store/output_files.hpp"
+#include "harness/store/plugin.hpp"
+#include "harness/store/run_record.hpp"
+#include "harness/scenes/scene.hpp"
+
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <csignal>
+#include <cstring>
+#include <fcntl.h>
+#include <fmt/format.h>
+#include <poll.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace rotbench {
+namespace {
+
+std::string& worker() {
+    static std::string path;
+    return path;
+}
+
+// The default time limit: ten times what a slow plug-in (10 us per body-step) would take, and
+// a minute more; ten minutes for a stability search, an amplification limit or a spectral curve.
+double default_timeout(const RunSpec& spec, const Scene& scene) {
+    if (spec.kind == RunKind::stability || spec.kind == RunKind::amplification || spec.kind == RunKind::spectral) return 600.0;
+    const double body_steps = static_cast<double>(step_count(scene.t_end(), spec.dt)) * static_cast<double>(scene.initial_state().size());
+    const double ways = spec.kind == RunKind::reversal ? 2.0 : spec.kind == RunKind::horizon ? 1.0 + energy_horizon : 1.0;
+    return 60.0 + 10.0 * 1e-5 * body_steps * ways;
+}
+
+// A run's record is a few kB (its energy series included); a worker that writes more is broken.
+constexpr std::size_t max_worker_output = std::size_t(64) << 20;
+
+// What a non-blocking pipe holds now; false once it is at its end.
+bool drain(int fd, std::string& into, std::size_t keep) {
+    char buffer[1 << 16];
+    for (;;) {
+        const ssize_t n = ::read(fd, buffer, sizeof buffer);
+        if (n < 0 && errno == EINTR) continue;
+        if (n < 0) return errno == EAGAIN || errno == EWOULDBLOCK;
+        if (n == 0) return false;
+        into.append(buffer, static_cast<std::size_t>(n));
+        if (keep && into.size() > keep) into.erase(0, into.size() - keep);
+    }
+}
+
+}  // namespace
+
+void set_worker_executable(std::string path) { worker() = std::move(path); }
+const std::string& worker_executable() { return worker(); }
+
+bool isolated(const std::string& scheme) { return !worker().empty() && plugin_of(scheme) != nullptr; }
+
+
+bool memory_limit_enforced() {
+#if defined(__SANITIZE_ADDRESS__)
+    return false;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+    return false;
+#endif
+#endif
+    return true;
+}
+
+std::size_t isolation_memory(int jobs) {
+    return static_cast<std::size_t>(std::max(1024.0, memory_bytes() / 2 / std::max(1, jobs) / (1 << 20)));
+}
+
+WorkerOutput run_worker(const std::vector<std::string>& verb_arguments, double seconds, std::size_t megabytes) {
+    WorkerOutput result;
+    const auto fail = [&](const std::string& why) {
+        result.failure = why;
+        return result;
+    };
+    // Everything the child needs is built before fork: after it, only exec.
+    std::vector<std::string> args = {worker()};
+    for (const auto& p : loaded_plugins()) args.insert(args.end(), {"--plugin", p.path});
+    args.insert(args.end(), verb_arguments.begin(), verb_arguments.end());
+    std::vector<char*> argv;
+    for (auto& a : args) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    int out[2], err[2];
+    if (::pipe2(out, O_CLOEXEC) != 0) return fail(std::string("could not start its worker: ") + std::strerror(errno));
+    if (::pipe2(err, O_CLOEXEC) != 0) {
+        ::close(out[0]), ::close(out[1]);
+        return fail(std::string("could not start its worker: ") + std::strerror(errno));
+    }
+    const rlim_t address_space = static_cast<rlim_t>(megabytes) << 20;
+    const bool limit_memory = memory_limit_enforced();
+    const pid_t pid = ::fork();
+    if (pid > 0) ::setpgid(pid, pid);  // as the child does: whichever runs first, the group exists before a kill
+    if (pid == 0) {
+        const rlimit limit{address_space, address_space};
+        if (limit_memory) ::setrlimit(RLIMIT_AS, &limit);
+        ::dup2(out[1], 1);
+        ::dup2(err[1], 2);
+        ::setpgid(0, 0);  // its own group: the terminal's Ctrl-C reaches the parent, which stops it
+        ::execv(argv[0], argv.data());
+        ::_exit(127);
+    }
+    ::close(out[1]);
+    ::close(err[1]);
+    if (pid < 0) {
+        ::close(out[0]), ::close(err[0]);
+        return fail(std::string("could not start its worker: ") + std::strerror(errno));
+    }
+    std::string& text = result.text;
+    std::string errors;
+    ::fcntl(out[0], F_SETFL, O_NONBLOCK);
+    ::fcntl(err[0], F_SETFL, O_NONBLOCK);
+    const auto start = std::chrono::steady_clock::now();
+    bool timed_out = false, interrupted = false, too_much = false, exited = false;
+    int status = 0;
+    pollfd fds[2] = {{out[0], POLLIN, 0}, {err[0], POLLIN, 0}};
+    // Until both pipes end, or the worker has exited (a process it started may hold them).
+    for (int open_fds = 2; open_fds > 0 && !exited;) {
+        if (interrupt_signal()) {
+            interrupted = true;
+            break;
+        }
+        if (std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > seconds) {
+            timed_out = true;
+            break;
+        }
+        const int ready = ::poll(fds, 2, 100);  // a tenth of a second: signals and limits are looked at that often
+        siginfo_t info{};  // WNOWAIT: seen to have exited, not reaped, so its pid stays its own
+        exited = ::waitid(P_PID, static_cast<id_t>(pid), &info, WEXITED | WNOHANG | WNOWAIT) == 0 && info.si_pid == pid;
+        for (int k = 0; k < 2; ++k) {
+            if (fds[k].fd < 0 || (!exited && !(ready > 0 && (fds[k].revents & (POLLIN | POLLHUP | POLLERR))))) continue;
+            if (!drain(fds[k].fd, k == 0 ? text : errors, k == 0 ? 0 : 4096)) {
+                ::close(fds[k].fd);
+                fds[k].fd = -1;
+                --open_fds;
+            }
+        }
+        if (text.size() > max_worker_output) {
+            too_much = true;
+            break;
+        }
+    }
+    // The worker's whole process group: it, and anything it started, whether it has exited or
+    // not. Its pid is not free for reuse until it is reaped below, so no other group is hit.
+    ::kill(-pid, SIGKILL);
+    for (auto& f : fds)
+        if (f.fd >= 0) ::close(f.fd);
+    while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+    }
+    if (const auto end = errors.find_last_not_of("\n"); end != std::string::npos) {
+        const auto line_break = errors.rfind('\n', end);
+        const std::size_t begin = line_break == std::string::npos ? 0 : line_break + 1;
+        result.last_error_line = ": " + errors.substr(begin, end - begin + 1);
+    }
+    if (interrupted) {
+        result.interrupted = true;
+        return result;
+    }
+    if (timed_out) return fail(fmt::format("exceeded the run time limit of {:g} s (--run-timeout); its worker was killed", seconds));
+    if (too_much) return fail(fmt::format("its worker wrote more than {} MB as its result; it was killed", max_worker_output >> 20));
+    if (WIFSIGNALED(status))
+        return fail(fmt::format("crashed: signal {} ({}) in its worker process", WTERMSIG(status), ::strsignal(WTERMSIG(status))));
+    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+        return fail(fmt::format("its worker exited with status {} without a result{}", WIFEXITED(status) ? WEXITSTATUS(status) : -1,
+                                result.last_error_line));
+    return result;
+}
+
+RunResult run_isolated(const RunSpec& spec, const RunOptions& options, const IsolationLimits& limits) {
+    RunResult failed{spec, {}, {}};
+    const auto fail = [&](const std::string& why) {
+        failed.failure = why;
+        failed.metrics = {{metric::unstable, 1.0}};
+        return failed;
+    };
+    const auto scene = scene_of(spec);
+    const double seconds = limits.seconds > 0 ? limits.seconds : default_timeout(spec, *scene);
+    const std::size_t megabytes = limits.megabytes > 0 ? limits.megabytes : isolation_memory(1);
+    std::vector<std::string> args = {"__run", "--spec", spec_record(spec), "--series", std::to_string(options.series_samples)};
+    if (!options.measure_time || !spec.timed) args.push_back("--untimed");
+    const WorkerOutput worker = run_worker(args, seconds, megabytes);
+    if (worker.interrupted) {
+        failed.interrupted = true;
+        return failed;
+    }
+    if (!worker.failure.empty()) return fail(worker.failure);
+    const std::string& text = worker.text;
+    const std::string& last_line = worker.last_error_line;
+    RunRecords records;
+    try {
+        records = parse_run_records(text, "the worker's output");
+    } catch (const InputError& e) {
+        return fail(std::string("its worker's output was not a run: ") + e.what());
+    }
+    if (records.runs.size() != 1 || records.whole_length != text.size())
+        return fail("its worker's output was not one whole run" + last_line);
+    RunResult result = std::move(records.runs.front().second);
+    RunSpec made = spec;
+    made.t_end = scene->t_end();  // every kind of run records the scene's duration, as in process
+    if (result.spec != made) return fail("its worker's output was the record of another run" + last_line);
+    if (memory_limit_enforced() && result.failure.find("bad_alloc") != std::string::npos)
+        result.failure += fmt::format(" (its worker's memory is limited to {} MB, --run-memory)", megabytes);
+    return result;
+}
+
+}  // namespace rotbench

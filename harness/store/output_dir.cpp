@@ -1,0 +1,195 @@
+#include "harness/store/output_dir.hpp"
+
+#include "harness/store/output_files.hpp"
+#include "harness/store/parse.hpp"
+#include "schemes/registry.hpp"
+
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <fcntl.h>
+#include <fmt/format.h>
+#include <sys/file.h>
+#include <unistd.h>
+
+namespace rotbench {
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr const char* meta = ".rotbench";
+constexpr const char* manifest_header = "rotbench manifest 1\n";
+
+fs::path manifest_path(const fs::path& dir) { return dir / meta / "manifest"; }
+
+std::vector<std::pair<std::string, std::string>> read_manifest(const fs::path& dir) {
+    std::vector<std::pair<std::string, std::string>> entries;
+    const auto text = read_file(manifest_path(dir));
+    if (!text) return entries;
+    if (text->rfind(manifest_header, 0) != 0) throw InputError((manifest_path(dir)).string() + ": not a rotbench manifest");
+    for (const auto& line : split_on(text->substr(std::string(manifest_header).size()), '\n')) {
+        if (line.empty()) continue;
+        const auto tab = line.find('\t');
+        if (tab == std::string::npos) throw InputError(manifest_path(dir).string() + ": a line without its family");
+        entries.push_back({line.substr(0, tab), line.substr(tab + 1)});
+    }
+    return entries;
+}
+
+void write_manifest(const fs::path& dir, const std::vector<std::pair<std::string, std::string>>& entries) {
+    std::string text = manifest_header;
+    for (const auto& [family, file] : entries) text += family + "\t" + file + "\n";
+    write_file_atomically(manifest_path(dir), text);
+}
+
+bool empty_directory(const fs::path& dir) {
+    std::error_code ec;
+    return fs::is_directory(dir, ec) && fs::directory_iterator(dir, ec) == fs::directory_iterator();
+}
+
+// The folders a command writes into: taken by a file, they would fail it mid-way.
+const char* const subfolders[] = {"plots", "series", "snapshots", "walls", "partial", meta};
+
+}  // namespace
+
+OutputDir::State::~State() {
+    if (lock_fd >= 0) ::close(lock_fd);  // releases the flock
+}
+
+OutputDir OutputDir::open(const fs::path& dir, const Request& r) {
+    const std::string name = dir.string();
+    std::error_code ec;
+    if (fs::exists(dir, ec) && !fs::is_directory(dir, ec)) throw InputError("--out " + name + ": cannot create the directory (a file is there)");
+    const bool existed = fs::exists(dir, ec);
+    const bool fresh = !existed || empty_directory(dir);
+    const bool ours = fs::exists(manifest_path(dir), ec);
+    if (!fresh && !ours && !r.overwrite)
+        throw InputError("--out " + name + " holds files rotbench did not write; choose another directory, or pass --overwrite to "
+                         "write beside them (none of them is replaced)");
+    auto manifest = ours ? read_manifest(dir) : std::vector<std::pair<std::string, std::string>>{};
+    const auto listed = [&](const std::string& file) {
+        return std::find_if(manifest.begin(), manifest.end(), [&](const auto& e) { return e.second == file; });
+    };
+    if (!r.resuming && fs::exists(dir / "partial" / "command", ec) && !r.overwrite)
+        throw InputError("--out " + name + " holds an interrupted run; rotbench run --resume " + name +
+                         " finishes it, --overwrite starts again");
+    if (!r.marker.empty() && !r.overwrite && !r.resuming && fs::exists(dir / r.marker, ec))
+        throw InputError("--out " + name + " already holds " + r.marker + "; pass --overwrite or choose another directory");
+    for (const char* sub : subfolders)
+        if (fs::exists(dir / sub, ec) && !fs::is_directory(dir / sub, ec))
+            throw InputError("--out " + name + ": " + (dir / sub).string() + " is a file where rotbench writes a directory");
+    for (const auto& file : r.files)
+        if (fs::exists(dir / file, ec)) {
+            const auto entry = listed(file);
+            if (entry == manifest.end())
+                throw InputError("--out " + name + ": " + (dir / file).string() + " exists and was not written by rotbench; it is never replaced");
+            if (entry->first != r.family)
+                throw InputError("--out " + name + ": " + (dir / file).string() + " was written by rotbench " + entry->first +
+                                 "; it is not replaced by " + r.family + " (choose another directory)");
+        }
+
+    if (!existed) {
+        fs::create_directories(dir, ec);
+        if (ec || !fs::is_directory(dir)) throw InputError("--out " + name + ": cannot create the directory");
+    }
+    const auto undo = [&] {  // a refused command leaves no directory of its own behind
+        std::error_code ignored;
+        if (!existed) fs::remove_all(dir, ignored);
+    };
+    fs::create_directories(dir / meta, ec);
+    if (ec) {
+        undo();
+        throw InputError("--out " + name + ": the directory is not writable");
+    }
+    auto state = std::make_shared<State>();
+    state->dir = dir;
+    state->family = r.family;
+    state->lock_fd = ::open((dir / meta / "lock").c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+    if (state->lock_fd < 0) {
+        undo();
+        throw InputError("--out " + name + ": the directory is not writable");
+    }
+    if (::flock(state->lock_fd, LOCK_EX | LOCK_NB) != 0) {
+        const auto holder = read_file(dir / meta / "lock").value_or("");
+        throw InputError("--out " + name + " is in use by another rotbench" + (holder.empty() ? "" : " (process " + holder + ")") +
+                         "; wait for it or choose another directory");
+    }
+    const std::string pid = std::to_string(::getpid());
+    if (::ftruncate(state->lock_fd, 0) != 0 || ::pwrite(state->lock_fd, pid.data(), pid.size(), 0) < 0) {
+        undo();
+        throw InputError("--out " + name + ": the directory is not writable");
+    }
+    // --overwrite replaces the family's earlier outputs: only the files its manifest lists.
+    if (r.overwrite && !r.resuming) {
+        std::vector<std::pair<std::string, std::string>> kept;
+        for (const auto& entry : manifest) {
+            if (entry.first == r.family) fs::remove(dir / entry.second, ec);
+            else kept.push_back(entry);
+        }
+        manifest = std::move(kept);
+    }
+    state->manifest = std::move(manifest);
+    try {
+        write_manifest(dir, state->manifest);
+    } catch (const InputError&) {
+        undo();
+        throw InputError("--out " + name + ": the directory is not writable");
+    }
+    return OutputDir(std::move(state));
+}
+
+void OutputDir::check(const std::string& relative) const {
+    std::error_code ec;
+    const fs::path file = state_->dir / relative;
+    if (!fs::exists(file, ec)) return;
+    const auto entry = std::find_if(state_->manifest.begin(), state_->manifest.end(),
+                                    [&](const auto& e) { return e.second == relative; });
+    if (entry == state_->manifest.end())
+        throw InputError(file.string() + " exists and was not written by rotbench; it is never replaced");
+    if (entry->first != state_->family)
+        throw InputError(file.string() + " was written by rotbench " + entry->first + "; it is not replaced by " + state_->family);
+}
+
+void OutputDir::record(const std::string& relative) const {
+    const bool known = std::any_of(state_->manifest.begin(), state_->manifest.end(), [&](const auto& e) { return e.second == relative; });
+    if (known) return;
+    state_->manifest.push_back({state_->family, relative});
+    write_manifest(state_->dir, state_->manifest);
+}
+
+void OutputDir::write(const std::string& relative, const std::string& content) const {
+    const fs::path file = claim(relative);
+    write_file_atomically(file, content);
+}
+
+fs::path OutputDir::claim(const std::string& relative) const {
+    std::lock_guard lock(state_->mutex);
+    check(relative);
+    const fs::path file = state_->dir / relative;
+    std::error_code ec;
+    fs::create_directories(file.parent_path(), ec);
+    record(relative);  // listed before it exists: a kill in between leaves a listed name, never an unlisted file
+    return file;
+}
+
+void check_output_file(const fs::path& file, const std::string& option, bool overwrite, const std::string& signature) {
+    std::error_code ec;
+    const fs::path parent = file.parent_path();
+    if (!parent.empty() && !fs::is_directory(parent, ec))
+        throw InputError(option + " " + file.string() + ": the directory " + parent.string() + " does not exist");
+    if (fs::exists(file, ec)) {
+        if (!fs::is_regular_file(file, ec)) throw InputError(option + " " + file.string() + ": not a regular file");
+        if (!overwrite) throw InputError(option + " " + file.string() + " exists; pass --overwrite to replace it");
+        const auto head = read_file(file).value_or("");
+        if (head.rfind(signature, 0) != 0)
+            throw InputError(option + " " + file.string() + " exists and is not a file rotbench wrote; it is never replaced");
+    }
+    // The directory must take a new file: probed now, not after the work.
+    const fs::path probe = (parent.empty() ? fs::path(".") : parent) / fmt::format(".rotbench-probe-{}", ::getpid());
+    const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
+    if (fd < 0) throw InputError(option + " " + file.string() + ": cannot write in " + (parent.empty() ? "." : parent.string()) + ": " + std::strerror(errno));
+    ::close(fd);
+    fs::remove(probe, ec);
+}
+
+}  // namespace rotbench

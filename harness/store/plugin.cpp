@@ -1,0 +1,79 @@
+#include "harness/core/fnv1a.hpp"
+#include "harness/store/plugin.hpp"
+
+#include "schemes/plugin_abi.hpp"
+
+#include "harness/store/output_files.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cstdint>
+#include <dlfcn.h>
+#include <fmt/format.h>
+#include <filesystem>
+
+namespace rotbench {
+
+namespace {
+
+std::vector<LoadedPlugin>& plugins() {
+    static std::vector<LoadedPlugin> list;
+    return list;
+}
+
+bool is_id(const std::string& s) {
+    return !s.empty() && std::all_of(s.begin(), s.end(), [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; });
+}
+
+}  // namespace
+
+const std::vector<LoadedPlugin>& loaded_plugins() { return plugins(); }
+
+const LoadedPlugin* plugin_of(const std::string& scheme) {
+    for (const auto& p : plugins())
+        if (std::find(p.schemes.begin(), p.schemes.end(), scheme) != p.schemes.end()) return &p;
+    return nullptr;
+}
+
+std::vector<std::string> load_plugin(const std::string& path) {
+    const std::string where = "--plugin " + path;
+    if (!std::filesystem::exists(path)) throw InputError(where + ": no such file");
+    if (!std::filesystem::is_regular_file(path)) throw InputError(where + ": not a regular file");
+    const auto bytes = read_file(path);
+    if (!bytes) throw InputError(where + ": cannot read the file");
+    // The same file again (a long-lived process, or the option given twice): already loaded.
+    const std::string absolute = std::filesystem::absolute(path).string(), hash = Fnv1a().feed(*bytes).hex();
+    for (const auto& p : plugins())
+        if (p.path == absolute && p.hash == hash) return p.schemes;
+    // A path without '/' would make dlopen search the library path instead of this file.
+    const std::string file = path.find('/') == std::string::npos ? "./" + path : path;
+    void* handle = dlopen(file.c_str(), RTLD_NOW | RTLD_LOCAL);
+    if (!handle) throw InputError(where + ": cannot load: " + dlerror());
+    const auto abi = reinterpret_cast<rotbench_plugin_abi_fn>(dlsym(handle, "rotbench_plugin_abi"));
+    const auto schemes = reinterpret_cast<rotbench_plugin_schemes_fn>(dlsym(handle, "rotbench_plugin_schemes"));
+    if (!abi || !schemes) {
+        dlclose(handle);
+        throw InputError(where + ": not a rotbench plug-in (no rotbench_plugin_abi / rotbench_plugin_schemes); build it "
+                                 "with rotbench_add_scheme() from find_package(rotbench)");
+    }
+    if (std::string(abi()) != ROTBENCH_PLUGIN_ABI) {
+        const std::string theirs = abi();
+        dlclose(handle);
+        throw InputError(where + ": ABI mismatch: the plug-in was built for '" + theirs + "', this rotbench is '" +
+                         ROTBENCH_PLUGIN_ABI + "'; rebuild the plug-in against this rotbench");
+    }
+    const SchemeRegistry& theirs = *schemes();
+    const auto ids = theirs.ids();
+    if (ids.empty()) throw InputError(where + ": the plug-in registers no scheme");
+    auto& ours = SchemeRegistry::instance();
+    for (const auto& id : ids) {
+        if (!is_id(id)) throw InputError(where + ": scheme id '" + id + "' is not letters, digits and underscores");
+        if (ours.contains(id))
+            throw InputError(where + ": scheme '" + id + "' is already registered; give the plug-in's scheme another id");
+    }
+    for (const auto& id : ids) ours.add(theirs.at(id, "scheme"));
+    plugins().push_back({absolute, hash, ids});
+    return ids;  // the handle is kept open: the factories live in the library
+}
+
+}  // namespace rotbench

@@ -1,0 +1,118 @@
+#include "harness/core/fnv1a.hpp"
+#include "harness/store/reference_cache.hpp"
+
+#include "harness/store/output_files.hpp"
+
+#include "build_info.hpp"
+
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fmt/format.h>
+#include <fstream>
+#include <string_view>
+
+namespace rotbench {
+namespace {
+
+constexpr char magic[8] = {'R', 'B', 'T', 'R', 'J', '0', '0', '2'};  // 002: with a checksum
+
+// A trajectory is only as reproducible as the build that computed it: another compiler, other
+// flags or other code round differently. The stored key therefore names the build, and a
+// build from a modified tree (whose code the commit does not pin) keeps no disk cache at all.
+// (Before, a sample report reused references cached by a build without -ffp-contract=off and
+// differed from a fresh run in the 14th digit.)
+std::string stored_key(const std::string& run_key) { return run_key + "|build=" + cache_build_key(); }
+
+std::filesystem::path directory() {
+    if (!build_is_pinned()) return "";
+    if (const char* dir = std::getenv("ROTBENCH_CACHE")) return std::string(dir) == "off" ? "" : dir;
+    if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg) return std::filesystem::path(xdg) / "rotbench";
+    if (const char* home = std::getenv("HOME"); home && *home) return std::filesystem::path(home) / ".cache" / "rotbench";
+    return "";
+}
+
+std::filesystem::path file_for(const std::string& scene_id, const std::string& key) {
+    const auto dir = directory();
+    return dir.empty() ? dir : dir / fmt::format("{}-{:016x}.traj", scene_id, Fnv1a().feed(key).value());
+}
+
+}  // namespace
+
+std::string cache_build_key() {
+    return fmt::format("{}|{}|{}|{}", build_info::commit, build_info::compiler, build_info::build_type, build_info::flags);
+}
+
+bool build_is_pinned() {
+    const std::string commit = build_info::commit;
+    return commit != "unknown" && !commit.ends_with("-dirty");
+}
+
+std::string encode_trajectory(const std::string& key, const Trajectory& trajectory) {
+    std::string bytes(magic, sizeof magic);
+    auto put = [&](const void* p, std::size_t n) { bytes.append(static_cast<const char*>(p), n); };
+    const std::uint64_t key_size = key.size(), bodies = trajectory.bodies, count = trajectory.values.size();
+    put(&key_size, sizeof key_size);
+    bytes += key;
+    put(&bodies, sizeof bodies);
+    put(&count, sizeof count);
+    if (count > 0) put(trajectory.values.data(), count * sizeof(double));
+    const std::uint64_t sum = Fnv1a().feed(bytes).value();
+    put(&sum, sizeof sum);
+    return bytes;
+}
+
+std::optional<Trajectory> decode_trajectory(const std::string& bytes, const std::string& key) {
+    // Every size is checked against the bytes there are before anything is allocated: a
+    // damaged file is a miss, never a huge allocation or a read past its end.
+    std::size_t at = 0;
+    const auto take = [&](void* into, std::size_t n) {
+        if (bytes.size() - at < n) return false;
+        if (n > 0) std::memcpy(into, bytes.data() + at, n);  // an empty trajectory's data() may be null
+        at += n;
+        return true;
+    };
+    char head[sizeof magic];
+    std::uint64_t key_size = 0, bodies = 0, count = 0, sum = 0;
+    if (!take(head, sizeof head) || std::memcmp(head, magic, sizeof magic) != 0) return std::nullopt;
+    if (!take(&key_size, sizeof key_size) || key_size != key.size() || bytes.compare(at, key_size, key) != 0) return std::nullopt;
+    at += key_size;
+    if (!take(&bodies, sizeof bodies) || !take(&count, sizeof count)) return std::nullopt;
+    if (bodies == 0 || count % (bodies * Trajectory::width) != 0) return std::nullopt;
+    if (count > (bytes.size() - at) / sizeof(double) || bytes.size() - at != count * sizeof(double) + sizeof sum) return std::nullopt;
+    Trajectory t;
+    t.bodies = bodies;
+    t.values.resize(count);
+    take(t.values.data(), count * sizeof(double));
+    take(&sum, sizeof sum);
+    if (sum != Fnv1a().feed(std::string_view(bytes).substr(0, at - sizeof sum)).value()) return std::nullopt;  // a flipped bit anywhere
+    return t;
+}
+
+std::optional<Trajectory> load_cached(const std::string& scene_id, const std::string& run_key) {
+    const std::string key = stored_key(run_key);
+    const auto path = file_for(scene_id, key);
+    if (path.empty()) return std::nullopt;
+    std::error_code error;
+    const auto size = std::filesystem::file_size(path, error);
+    if (error || size > max_cached_bytes + (1 << 20)) return std::nullopt;
+    std::ifstream in(path, std::ios::binary);
+    std::string bytes(size, '\0');
+    if (!in.read(bytes.data(), static_cast<std::streamsize>(size))) return std::nullopt;
+    return decode_trajectory(bytes, key);
+}
+
+void store_cached(const std::string& scene_id, const std::string& run_key, const Trajectory& trajectory) {
+    const std::string key = stored_key(run_key);
+    const auto path = file_for(scene_id, key);
+    if (path.empty() || trajectory.values.size() * sizeof(double) > max_cached_bytes) return;
+    try {
+        std::filesystem::create_directories(path.parent_path());
+        write_file_atomically(path, encode_trajectory(key, trajectory));
+    } catch (const std::exception&) {
+        // An unwritable cache costs time, not correctness.
+    }
+}
+
+}  // namespace rotbench

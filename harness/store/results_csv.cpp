@@ -1,0 +1,103 @@
+#include "harness/store/results_csv.hpp"
+
+#include "harness/store/csv.hpp"
+#include "harness/store/parse.hpp"
+#include "harness/store/run_record.hpp"
+#include "harness/store/output_files.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <fmt/format.h>
+
+namespace rotbench {
+
+namespace {
+
+constexpr const char* results_header = "scene,scheme,dt,metric,value";
+constexpr const char* runs_header = "scene,scheme,kind,dt,t_end,params,metrics,timing,failure";
+
+std::string params_field(const ParamOverrides& params) {
+    std::string out;
+    for (const auto& [key, values] : params) {
+        out += (out.empty() ? "" : ";") + key + "=";
+        for (std::size_t i = 0; i < values.size(); ++i) out += (i ? " " : "") + format_number(values[i]);
+    }
+    return out;
+}
+
+}  // namespace
+
+std::string results_csv(const std::vector<RunResult>& results) {
+    std::string csv = std::string(results_header) + "\n";
+    for (const auto& r : results)
+        for (const auto& [metric, value] : r.metrics)
+            csv += csv_record({r.spec.scene, r.spec.scheme, format_number(r.spec.dt), metric, format_number(value)});
+    return csv;
+}
+
+std::string runs_csv(const std::vector<RunResult>& results) {
+    std::string csv = std::string(runs_header) + "\n";
+    for (const auto& r : results) {
+        std::string timing;
+        for (double t : r.timing_samples) timing += (timing.empty() ? "" : " ") + format_number(t);
+        csv += csv_record({r.spec.scene, r.spec.scheme, kind_name(r.spec.kind), format_number(r.spec.dt),
+                           format_number(r.spec.t_end), params_field(r.spec.params), std::to_string(r.metrics.size()), timing,
+                           r.failure});
+    }
+    return csv;
+}
+
+namespace {
+
+// An id as the registries hold them: letters, digits and underscores.
+bool is_id(const std::string& s) {
+    return !s.empty() && std::all_of(s.begin(), s.end(), [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; });
+}
+
+// What a run store of rotbench's holds: ids, and steps and durations in range. A store cut,
+// edited or written by something else is refused, never taken for results.
+void check_run(const RunResult& r, const std::string& at) {
+    if (!is_id(r.spec.scene) || !is_id(r.spec.scheme)) throw InputError(at + ": a scene or scheme id that is not one");
+    if (!(r.spec.t_end > 0.0) || !std::isfinite(r.spec.t_end) || !std::isfinite(r.spec.dt) || r.spec.dt < 0.0 ||
+        (r.spec.kind != RunKind::stability && !(r.spec.dt > 0.0)))
+        throw InputError(at + ": dt or t_end out of range");
+    for (const auto& [name, value] : r.metrics)
+        if (!is_id(name)) throw InputError(at + ": '" + name + "' is not a metric name");
+}
+
+}  // namespace
+
+std::string run_store(const std::vector<RunResult>& runs) {
+    std::string text;
+    for (std::size_t i = 0; i < runs.size(); ++i) text += run_record(i, runs[i]);
+    return text;
+}
+
+void write_run_files(const OutputDir& dir, const std::vector<RunResult>& runs) {
+    dir.write("runs.jsonl", run_store(runs));
+    dir.write("results.csv", results_csv(runs));
+    dir.write("runs.csv", runs_csv(runs));
+}
+
+std::vector<RunResult> parse_run_store(const std::string& text, const std::string& name) {
+    RunRecords records = parse_run_records(text, name);
+    if (records.whole_length != text.size())
+        throw InputError(fmt::format("{}: cut short or not a run store after {} runs", name, records.runs.size()));
+    if (records.runs.empty()) throw InputError(name + ": no run in the store");
+    std::vector<RunResult> runs;
+    for (auto& [index, run] : records.runs) {
+        const std::string at = fmt::format("{}: run {}", name, index);
+        if (index != runs.size()) throw InputError(fmt::format("{}: run {} where run {} is due", name, index, runs.size()));
+        check_run(run, at);
+        runs.push_back(std::move(run));
+    }
+    return runs;
+}
+
+std::vector<RunResult> read_results(const std::filesystem::path& dir) {
+    const std::filesystem::path store = dir / "runs.jsonl";
+    return parse_run_store(read_input_file(store, "cannot read"), store.string());
+}
+
+}  // namespace rotbench

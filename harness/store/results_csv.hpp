@@ -1,0 +1,36 @@
+// results.csv: tidy long format, header exactly `scene,scheme,dt,metric,value`
+// (docs/outputs.md).
+#pragma once
+
+#include "harness/core/run.hpp"
+#include "harness/store/output_dir.hpp"
+
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace rotbench {
+
+std::string results_csv(const std::vector<RunResult>& results);
+
+// runs.csv: what results.csv does not hold, for a reader of the CSVs:
+// header scene,scheme,kind,dt,t_end,params,metrics,timing,failure; params as
+// KEY=V1 V2 ...;KEY=..., metrics the number of the run's rows in results.csv (whose rows
+// follow the runs' order), timing the CPU seconds of each timing repeat. RFC 4180 quoting
+// (harness/store/csv.hpp).
+std::string runs_csv(const std::vector<RunResult>& results);
+
+// runs.jsonl, the run store of an output folder: one record per run (harness/store/run_record.hpp),
+// indexed from 0 in the order of results.csv and runs.csv, which are exports of it.
+std::string run_store(const std::vector<RunResult>& runs);
+// Writes runs.jsonl, results.csv and runs.csv of the runs.
+void write_run_files(const OutputDir& dir, const std::vector<RunResult>& runs);
+
+// Reads a folder's runs back from its store, as they were made. InputError when the store is
+// missing, cut, or not rotbench's (an id that is not one, a step out of range); `name` stands
+// for the file in messages.
+std::vector<RunResult> read_results(const std::filesystem::path& dir);
+std::vector<RunResult> parse_run_store(const std::string& text, const std::string& name);
+
+}  // namespace rotbench

@@ -1,0 +1,38 @@
+// The run store's record: one finished run, whole and lossless, as one line of JSON (JSON
+// Lines). It is the form in which the journal keeps runs and an isolated worker hands its run
+// back; every CSV of a run is an export of these records, never read back inside the run.
+//   {"index": I, "run": {"spec": {...}, "metrics": [[name, value], ...], "failure": "...",
+//    "series_columns": [...], "series": [[...], ...], "snapshots": [...], "walls": [...],
+//    "timing_samples": [...]}}
+// A number that is not finite is written as the string "nan", "inf" or "-inf" (JSON has none);
+// every other one in the shortest form that reads back to the same double. docs/outputs.md.
+#pragma once
+
+#include "harness/core/run.hpp"
+
+#include <cstddef>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace rotbench {
+
+// The record of run `index`, ending with its line break.
+std::string run_record(std::size_t index, const RunResult& result);
+
+struct RunRecords {
+    std::vector<std::pair<std::size_t, RunResult>> runs;  // in the order found
+    std::size_t whole_length = 0;                         // the bytes the whole records span
+};
+
+// The whole records at the start of `text`; reading stops at the first line that is cut (no
+// line break: a kill while it was written) or is not a record. A line that is JSON of the
+// record's shape but holds a wrong value (an unknown kind, a metric that is not a number) is
+// an InputError naming `name`.
+RunRecords parse_run_records(const std::string& text, const std::string& name);
+
+// A run's spec alone, as one line without a line break (the worker's --spec), and back.
+std::string spec_record(const RunSpec& spec);
+RunSpec parse_spec_record(const std::string& text, const std::string& name);
+
+}  // namespace rotbench
