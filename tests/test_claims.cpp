@@ -128,6 +128,22 @@ TEST_CASE("claims: time reversal returns within 2 N x 4 eps, and further fails")
     CHECK_FALSE(judge_reversal(failed).passed);
 }
 
+TEST_CASE("claims: a stability margin and a cost ratio hold at their bound and fail beyond it") {
+    const RunResult search = run(0.0, {{"dt_empirical", 2e-3}, {"dt_peng", 1e-3}, {"stability_ratio", 2.0}}, RunKind::stability);
+    CHECK(judge_stability_margin(search, 2.0).passed);
+    const Judgement narrow = judge_stability_margin(search, 2.5);
+    CHECK_FALSE(narrow.passed);
+    CHECK(narrow.message == "measured limit 0.002 s = 2 x Peng's prediction 0.001 s, required >= 2.5");
+    const RunResult direct = run(1e-3, {{"ns_per_step", 50.0}}), slow = run(1e-3, {{"ns_per_step", 400.0}});
+    CHECK(judge_cost_ratio(slow, direct, 8).passed);
+    const Judgement dear = judge_cost_ratio(slow, direct, 7.9);
+    CHECK_FALSE(dear.passed);
+    CHECK(dear.message == "400 ns per step against 50 for direct: ratio 8, required <= 7.9");
+    const Judgement untimed = judge_cost_ratio(run(1e-3, {}), direct, 8);
+    CHECK_FALSE(untimed.passed);
+    CHECK(untimed.message == "no timing (a run failed)");
+}
+
 TEST_CASE("claims: the gate fails each claim the judge fails, with the judge's message") {
     GatePlan plan;
     std::vector<RunResult> runs;

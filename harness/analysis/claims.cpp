@@ -233,4 +233,26 @@ Judgement judge_reversal(const RunResult& run) {
     return j;
 }
 
+Judgement judge_stability_margin(const RunResult& search, double min_ratio) {
+    Judgement j;
+    j.bound = min_ratio;
+    j.measured = search.value(metric::stability_ratio);
+    j.passed = j.measured >= min_ratio;
+    j.message = fmt::format("measured limit {} s = {} x Peng's prediction {} s, required >= {}", g(search.value(metric::dt_empirical)),
+                            g(j.measured), g(search.value(metric::dt_peng)), g(min_ratio));
+    return j;
+}
+
+Judgement judge_cost_ratio(const RunResult& run, const RunResult& direct, double max_ratio) {
+    Judgement j;
+    j.bound = max_ratio;
+    j.measured = run.value(metric::ns_per_step) / direct.value(metric::ns_per_step);
+    j.passed = j.measured <= max_ratio;
+    j.message = std::isnan(j.measured) ? "no timing (a run failed)"
+                                       : fmt::format("{} ns per step against {} for direct: ratio {}, required <= {}",
+                                                     g(run.value(metric::ns_per_step)), g(direct.value(metric::ns_per_step)), g(j.measured),
+                                                     g(max_ratio));
+    return j;
+}
+
 }  // namespace rotbench

@@ -48,17 +48,9 @@ void judge_check(Verdict& v, const GateCheck& c, const Runs& runs) {
         return;
     }
     if (c.criterion == "min_stability") {
-        v.measured = r.value(metric::stability_ratio);
-        v.passed = v.measured >= c.bound;
-        v.message = fmt::format("{}: measured limit {} s = {} x Peng's prediction {} s, required >= {}", name, g(r.value(metric::dt_empirical)),
-                                g(v.measured), g(r.value(metric::dt_peng)), g(c.bound));
+        take(v, judge_stability_margin(r, c.bound), name);
     } else if (c.criterion == "max_cost_ratio") {
-        const RunResult& direct = *runs[1];
-        v.measured = r.value(metric::ns_per_step) / direct.value(metric::ns_per_step);
-        v.passed = v.measured <= c.bound;
-        v.message = std::isnan(v.measured) ? name + ": no timing (a run failed)"
-                                           : fmt::format("{}: {} ns per step against {} for direct: ratio {}, required <= {}", name,
-                                                         g(r.value(metric::ns_per_step)), g(direct.value(metric::ns_per_step)), g(v.measured), g(c.bound));
+        take(v, judge_cost_ratio(r, *runs[1], c.bound), name);
     } else {
         v.measured = r.value(c.metric);
         if (std::isnan(v.measured)) {
