@@ -24,10 +24,10 @@ void check_reference_fits(const Scene& scene, double dt, std::int64_t steps) {
     const double per_step = static_cast<double>(Trajectory::width * sizeof(double));
     const double bytes = (static_cast<double>(steps) + 1.0) * bodies * per_step;
     if (bytes <= memory_bytes() / 2) return;
-    throw InputError(fmt::format("{} at dt {:g}: its reference would take {:.0f} GB of memory ({:.3g} steps x {:g} bodies x {:g} B), "
-                                 "more than half of this machine's {:.0f} GB; use a larger --dt or a shorter --t-end",
-                                 scene.params.owner(), dt, std::ceil(bytes / 1e9), static_cast<double>(steps), bodies, per_step,
-                                 memory_bytes() / 1e9));
+    throw InputError(
+        fmt::format("{} at dt {:g}: its reference would take {:.0f} GB of memory ({:.3g} steps x {:g} bodies x {:g} B), "
+                    "more than half of this machine's {:.0f} GB; use a larger --dt or a shorter --t-end",
+                    scene.params.owner(), dt, std::ceil(bytes / 1e9), static_cast<double>(steps), bodies, per_step, memory_bytes() / 1e9));
 }
 
 }  // namespace

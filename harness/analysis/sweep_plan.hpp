@@ -11,12 +11,12 @@
 namespace rotbench {
 
 struct SweepSpec {
-    std::vector<std::string> scenes;   // empty: every registered scene
-    std::vector<std::string> schemes;  // empty: every registered scheme
-    std::vector<double> dts;           // empty: each scene's default ladder
-    double t_end = 0.0;                // 0: each scene's default
-    bool quick = false;                // each scene's quick ladder and sizes instead of its default ones
-    int ensemble = 1;                  // runs per scheme and dt of a scene with a `seed` key, seeds seed ... seed + K - 1
+    std::vector<std::string> scenes;               // empty: every registered scene
+    std::vector<std::string> schemes;              // empty: every registered scheme
+    std::vector<double> dts;                       // empty: each scene's default ladder
+    double t_end = 0.0;                            // 0: each scene's default
+    bool quick = false;                            // each scene's quick ladder and sizes instead of its default ones
+    int ensemble = 1;                              // runs per scheme and dt of a scene with a `seed` key, seeds seed ... seed + K - 1
     std::map<std::string, ParamOverrides> params;  // scene id -> overrides (--set, config)
 };
 

@@ -19,8 +19,7 @@ double RunResult::value(std::string_view name) const {
 
 std::int64_t step_count(double t_end, double dt) {
     if (!std::isfinite(dt) || dt <= 0.0) throw InputError(fmt::format("time step must be a positive number, got {}", dt));
-    if (!std::isfinite(t_end) || t_end <= 0.0)
-        throw InputError(fmt::format("t-end must be a positive number, got {}", t_end));
+    if (!std::isfinite(t_end) || t_end <= 0.0) throw InputError(fmt::format("t-end must be a positive number, got {}", t_end));
     if (t_end < dt) throw InputError(fmt::format("t-end {} is shorter than the time step {}", t_end, dt));
     const double ratio = t_end / dt;
     const double nearest = std::round(ratio);
@@ -30,7 +29,7 @@ std::int64_t step_count(double t_end, double dt) {
 }
 
 namespace {
-constexpr RunKind all_kinds[] = {RunKind::trajectory, RunKind::reversal,  RunKind::stability, RunKind::horizon,
+constexpr RunKind all_kinds[] = {RunKind::trajectory,    RunKind::reversal, RunKind::stability, RunKind::horizon,
                                  RunKind::amplification, RunKind::spectral, RunKind::states};
 }
 

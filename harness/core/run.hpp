@@ -33,10 +33,10 @@ struct RunSpec {
     std::string scene;
     std::string scheme;
     double dt = 0.0;
-    double t_end = 0.0;      // 0: the scene's default
+    double t_end = 0.0;     // 0: the scene's default
     ParamOverrides params;  // scene parameters other than t_end, as given by the user
     RunKind kind = RunKind::trajectory;
-    bool timed = true;      // false: no timing repeats (the gate's accuracy runs)
+    bool timed = true;  // false: no timing repeats (the gate's accuracy runs)
 
     // A run's identity: two specs that compare equal make the same run.
     friend auto operator<=>(const RunSpec&, const RunSpec&) = default;
@@ -45,8 +45,8 @@ struct RunSpec {
 struct RunResult {
     RunSpec spec;
     std::vector<std::pair<std::string, double>> metrics;  // names are the CSV contract
-    std::string failure;  // empty, or why the run stopped early
-    bool interrupted = false;  // SIGINT or SIGTERM stopped it: not a result
+    std::string failure;                                  // empty, or why the run stopped early
+    bool interrupted = false;                             // SIGINT or SIGTERM stopped it: not a result
     // Energy against time, when asked for: columns t, energy_error ((E - E0)/|E0|), then
     // the scene's energy parts by name. Or a granular scene's curve (SceneProbe::curve), which
     // an ensemble's result holds as a band: each y column's mean, then y_min and y_max.

@@ -52,6 +52,7 @@ RunResult Executor::make(const RunSpec& task) {
 
 RunResult Executor::run(const RunSpec& task) {
     RunResult result = make(key_of(task));
+    std::lock_guard lock(mutex_);
     if (write_failure_) throw *write_failure_;
     return result;
 }
@@ -83,8 +84,7 @@ std::vector<RunResult> Executor::run(const std::vector<RunSpec>& given) {
             phases[options_.timed_alone && tasks[i].timed ? 1 : 0].push_back(i);
         }
     }
-    if (journal_ && !finished_.empty())
-        out_ << fmt::format("resuming: {} of {} runs were finished\n", found, tasks.size());
+    if (journal_ && !finished_.empty()) out_ << fmt::format("resuming: {} of {} runs were finished\n", found, tasks.size());
     std::vector<double> weights;  // of what is left, in the order it runs
     std::vector<std::size_t> item_of(tasks.size());
     for (const auto& phase : phases)
@@ -106,8 +106,8 @@ std::vector<RunResult> Executor::run(const std::vector<RunSpec>& given) {
                 results[i] = make(s);
                 if (results[i].interrupted) return;
                 if (!results[i].failure.empty() && !options_.quiet)
-                    progress.note(out_, fmt::format("{} {} {} dt={:g} FAILED: {}", s.scene, s.scheme, kind_name(s.kind), s.dt,
-                                                    results[i].failure));
+                    progress.note(
+                        out_, fmt::format("{} {} {} dt={:g} FAILED: {}", s.scene, s.scheme, kind_name(s.kind), s.dt, results[i].failure));
                 progress.finished(item_of[i], !results[i].failure.empty());
             });
         for (const auto& phase : phases)  // the tasks of a phase that did not start
@@ -118,11 +118,11 @@ std::vector<RunResult> Executor::run(const std::vector<RunSpec>& given) {
         std::size_t kept = 0;
         try {
             kept = journal_->finished().size();
-        } catch (const std::exception&) {
-        }
-        throw OutputError(fmt::format("{}; {} of {} runs are kept in the journal, and rotbench run --resume {} finishes the work once "
-                                      "it can write",
-                                      write_failure_->what(), kept, tasks.size(), journal_->directory().string()));
+        } catch (const std::exception&) {}
+        throw OutputError(
+            fmt::format("{}; {} of {} runs are kept in the journal, and rotbench run --resume {} finishes the work once "
+                        "it can write",
+                        write_failure_->what(), kept, tasks.size(), journal_->directory().string()));
     }
     std::vector<RunResult> in_order;
     for (std::size_t t : task_of) in_order.push_back(results[t]);
@@ -135,8 +135,7 @@ int Executor::interrupted() const {
     if (journal_) {
         try {
             kept = journal_->finished().size();
-        } catch (const std::exception&) {
-        }
+        } catch (const std::exception&) {}
     }
     err_ << fmt::format("rotbench: interrupted by signal {}: {}\n", signal,
                         journal_ ? fmt::format("{} runs are kept in {}; rotbench run --resume {} finishes the work", kept,

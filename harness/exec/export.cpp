@@ -15,8 +15,8 @@ namespace rotbench {
 std::vector<double> state_row(const Scene& scene, double t, const Bodies& b) {
     const Quat q = b.orientation[0];
     const Vec3 w = b.omega[0], wb = to_body(q, w), x = b.position[0], v = b.velocity[0];
-    return {t, q.w(), q.x(), q.y(), q.z(), w.x(), w.y(), w.z(), wb.x(), wb.y(), wb.z(), x.x(), x.y(), x.z(), v.x(), v.y(), v.z(),
-            scene.energy(b)};
+    return {t,      q.w(),  q.x(), q.y(), q.z(), w.x(), w.y(), w.z(), wb.x(),
+            wb.y(), wb.z(), x.x(), x.y(), x.z(), v.x(), v.y(), v.z(), scene.energy(b)};
 }
 
 std::vector<std::vector<double>> reference_states(const Scene& scene, int samples) {

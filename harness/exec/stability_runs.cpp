@@ -60,8 +60,7 @@ RunResult run_spectral(const RunSpec& requested) {
         double rho = std::numeric_limits<double>::infinity();  // a scheme that throws has no bounded step map
         try {
             rho = spectral_radius(*scene, step_jacobian(*scene, requested.scheme, dt));
-        } catch (...) {
-        }
+        } catch (...) {}
         result.series.push_back({dt, rho});
     }
     return unless_interrupted(std::move(result));

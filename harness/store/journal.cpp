@@ -68,7 +68,8 @@ Journal Journal::reopen(const OutputDir& out) {
     const fs::path out_dir = out.path(), dir = journal_dir(out_dir);
     if (!journal_exists(out_dir)) throw InputError("--resume " + out_dir.string() + ": no interrupted run there (no partial/command)");
     if (fs::exists(dir / "plugins") && read_text(dir / "plugins") != plugins_text())
-        throw InputError("--resume " + out_dir.string() + ": a plug-in has changed since the run was interrupted (partial/plugins "
+        throw InputError("--resume " + out_dir.string() +
+                         ": a plug-in has changed since the run was interrupted (partial/plugins "
                          "names each with its hash); run it again with --overwrite");
     // A record cut short by a kill would sit between the runs appended from now on: cut it off.
     const fs::path runs = out.claim("partial/runs.jsonl");
