@@ -4,6 +4,7 @@
 #include "harness/analysis/ensemble.hpp"
 #include "harness/exec/machine.hpp"
 #include "harness/exec/run.hpp"
+#include "harness/store/client.hpp"
 #include "references/trajectory.hpp"
 
 #include <fmt/format.h>
@@ -32,7 +33,7 @@ void check_reference_fits(const Scene& scene, double dt, std::int64_t steps) {
 
 }  // namespace
 
-std::vector<RunSpec> plan_sweep(const SweepSpec& spec) {
+std::vector<RunSpec> plan_sweep(const SweepSpec& spec, std::vector<std::string>* skipped) {
     const auto& scenes = SceneRegistry::instance();
     const auto& schemes = SchemeRegistry::instance();
     std::vector<std::string> scene_ids = spec.scenes;
@@ -64,6 +65,10 @@ std::vector<RunSpec> plan_sweep(const SweepSpec& spec) {
         const int members = seeded ? spec.ensemble : 1;
         const bool horizon = judges_energy(scene_info(*scene));
         for (const auto& scheme_id : scheme_ids) {
+            if (const std::string why = why_not_taken(scheme_id, scene_id); !why.empty()) {
+                if (skipped) skipped->push_back(why);
+                continue;
+            }
             for (double dt : dts)
                 for (int k = 0; k < members; ++k)
                     plan.push_back({scene_id, scheme_id, dt, t_end,

@@ -24,6 +24,8 @@ struct SweepSpec {
 // on a scene where bounded energy is judged, the scheme's horizon run at the coarsest dt,
 // harness/analysis/claims.hpp). Checks every input first, so a bad one is reported before
 // anything runs (InputError).
-std::vector<RunSpec> plan_sweep(const SweepSpec& spec);
+// A client scheme is planned only on the scenes its file lists; each pair skipped is said in
+// `skipped`, when given.
+std::vector<RunSpec> plan_sweep(const SweepSpec& spec, std::vector<std::string>* skipped = nullptr);
 
 }  // namespace rotbench

@@ -2,6 +2,7 @@
 
 #include "harness/cli/verb.hpp"
 #include "harness/store/output_files.hpp"
+#include "harness/store/client.hpp"
 #include "harness/store/plugin.hpp"
 
 #include "build_info.hpp"
@@ -46,8 +47,9 @@ int run_cli_arguments(const std::vector<std::string>& arguments, std::ostream& o
     CLI::App app{"rotbench: verification and convergence harness for rigid-body rotation schemes"};
     app.fallthrough();  // --plugin may follow the command
     app.require_subcommand(0, 1);
-    std::vector<std::string> plugins;
+    std::vector<std::string> plugins, clients;
     app.add_option("--plugin", plugins, "load schemes from a plug-in built with rotbench_add_scheme() (repeatable)");
+    app.add_option("--client", clients, "a scheme run by a program outside rotbench, from its client file (repeatable; docs/clients.md)");
     bool version = false;
     app.add_flag("--version", version, "print the version, commit, compiler and flags, and exit");
     std::map<std::string, std::pair<CLI::App*, std::unique_ptr<Verb>>> verbs;
@@ -84,6 +86,10 @@ int run_cli_arguments(const std::vector<std::string>& arguments, std::ostream& o
             for (const auto& plugin : plugins) {
                 const auto ids = load_plugin(plugin);
                 if (!internal) err << "rotbench: loaded " << join(ids, ", ") << " from " << plugin << "\n";
+            }
+            for (const auto& client : clients) {
+                const std::string id = load_client(client);
+                if (!internal) err << "rotbench: loaded client " << id << " from " << client << "\n";
             }
         };
         const Invocation invocation{arguments, command_line, out, err, resuming, load};

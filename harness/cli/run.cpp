@@ -92,7 +92,8 @@ int resume(const CLI::App& run_cmd, const std::string& dir, std::ostream& out, s
 }
 
 int run_sweep_command(const RunOptionsText& o, const Invocation& how) {
-    const PlanSlice slice = slice_plan(plan_sweep(sweep_spec(o)), o.shard);  // every input checked before anything runs
+    std::vector<std::string> skipped;
+    const PlanSlice slice = slice_plan(plan_sweep(sweep_spec(o), &skipped), o.shard);  // every input checked before anything runs
     parse_tolerances(o.tolerances);
     const OutputDir dir = OutputDir::open(how.resuming ? *how.resuming : fs::path(o.out),
                                           {"run", "results.csv", slice.shard ? slice_files : run_files, o.overwrite,
@@ -101,6 +102,7 @@ int run_sweep_command(const RunOptionsText& o, const Invocation& how) {
     ExecOptions options{.jobs = o.jobs, .quiet = o.quiet};
     options.run.series_samples = o.energy_series;
     o.isolation.apply(options.run);
+    for (const auto& why : skipped) how.out << "skipped: " << why << "\n";
     Executor executor = make_executor(how, &dir, options);
     const std::vector<RunResult> results = executor.run(slice.runs);
     if (executor.signal()) return executor.interrupted();

@@ -1,6 +1,8 @@
 #include "harness/exec/executor.hpp"
 
+#include "harness/exec/client_run.hpp"
 #include "harness/exec/isolation.hpp"
+#include "harness/store/client.hpp"
 #include "harness/exec/parallel.hpp"
 #include "harness/store/progress.hpp"
 
@@ -36,8 +38,11 @@ RunResult Executor::make(const RunSpec& task) {
     if (interrupt_signal()) return RunResult{task, {}, {}, true};
     const IsolationLimits limits{options_.run.run_timeout,
                                  options_.run.run_memory_mb ? options_.run.run_memory_mb : isolation_memory(options_.jobs)};
-    // run_one records a failing scheme; what it throws is bad input, passed on to the command.
-    RunResult result = isolated(task.scheme) ? run_isolated(task, options_.run, limits) : run_one(task, options_.run);
+    // How a task is made is decided here alone: a client's by its program, a plug-in's in a worker,
+    // a built-in's in process. A failing scheme is recorded; what they throw is bad input, passed on.
+    RunResult result = client_of(task.scheme) ? run_client(task, options_.run, limits)
+                       : isolated(task.scheme) ? run_isolated(task, options_.run, limits)
+                                               : run_one(task, options_.run);
     if (result.interrupted || !journal_) return result;
     try {
         journal_->record(result);

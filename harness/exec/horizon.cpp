@@ -6,7 +6,7 @@ namespace rotbench {
 
 // Two trajectory runs, over the scene's duration and energy_horizon times it: the longer one's
 // first stretch is the shorter one bit for bit, so this is one run read at two times.
-RunResult run_horizon(const RunSpec& requested) {
+RunResult run_horizon(const RunSpec& requested, const SchemeFactory& make) {
     RunSpec first = requested;
     first.kind = RunKind::trajectory;
     first.timed = false;
@@ -16,7 +16,7 @@ RunResult run_horizon(const RunSpec& requested) {
     RunResult result{requested, {}, {}};
     result.spec.t_end = first.t_end;
     for (const auto& [spec, name] : {std::pair{first, metric::energy_drift_first}, std::pair{longer, metric::energy_drift_horizon}}) {
-        const RunResult r = run_trajectory(spec, {.measure_time = false});
+        const RunResult r = run_trajectory(spec, {.measure_time = false}, make);
         if (r.interrupted) {
             result.interrupted = true;
             return result;

@@ -1,5 +1,7 @@
 #include "harness/exec/isolation.hpp"
 
+#include "harness/store/parse.hpp"
+
 #include "harness/exec/interrupt.hpp"
 #include "harness/exec/machine.hpp"
 #include "harness/store/csv.hpp"
@@ -77,23 +79,40 @@ std::size_t isolation_memory(int jobs) {
 }
 
 WorkerOutput run_worker(const std::vector<std::string>& verb_arguments, double seconds, std::size_t megabytes) {
+    std::vector<std::string> args = {worker()};
+    for (const auto& p : loaded_plugins()) args.insert(args.end(), {"--plugin", p.path});
+    args.insert(args.end(), verb_arguments.begin(), verb_arguments.end());
+    return run_program(args, "", seconds, megabytes, "worker");
+}
+
+WorkerOutput run_program(std::vector<std::string> args, const std::string& directory, double seconds, std::size_t megabytes,
+                         const std::string& what) {
     WorkerOutput result;
     const auto fail = [&](const std::string& why) {
         result.failure = why;
         return result;
     };
-    // Everything the child needs is built before fork: after it, only exec.
-    std::vector<std::string> args = {worker()};
-    for (const auto& p : loaded_plugins()) args.insert(args.end(), {"--plugin", p.path});
-    args.insert(args.end(), verb_arguments.begin(), verb_arguments.end());
+    // Everything the child needs is built before fork: after it, only chdir and exec.
+    if (args.empty() || args.front().empty()) return fail("no program to start");
+    if (args.front().find('/') == std::string::npos) {  // looked up on PATH here, as execvp would
+        std::string found;
+        const char* path = std::getenv("PATH");
+        for (const auto& folder : split_on(path ? path : "", ':'))
+            if (!folder.empty() && ::access((folder + "/" + args.front()).c_str(), X_OK) == 0) {
+                found = folder + "/" + args.front();
+                break;
+            }
+        if (found.empty()) return fail("its " + what + " '" + args.front() + "' is not found on PATH");
+        args.front() = found;
+    }
     std::vector<char*> argv;
     for (auto& a : args) argv.push_back(a.data());
     argv.push_back(nullptr);
     int out[2], err[2];
-    if (::pipe2(out, O_CLOEXEC) != 0) return fail(std::string("could not start its worker: ") + std::strerror(errno));
+    if (::pipe2(out, O_CLOEXEC) != 0) return fail("could not start its " + what + ": " + std::strerror(errno));
     if (::pipe2(err, O_CLOEXEC) != 0) {
         ::close(out[0]), ::close(out[1]);
-        return fail(std::string("could not start its worker: ") + std::strerror(errno));
+        return fail("could not start its " + what + ": " + std::strerror(errno));
     }
     const rlim_t address_space = static_cast<rlim_t>(megabytes) << 20;
     const bool limit_memory = memory_limit_enforced();
@@ -105,6 +124,7 @@ WorkerOutput run_worker(const std::vector<std::string>& verb_arguments, double s
         ::dup2(out[1], 1);
         ::dup2(err[1], 2);
         ::setpgid(0, 0);  // its own group: the terminal's Ctrl-C reaches the parent, which stops it
+        if (!directory.empty() && ::chdir(directory.c_str()) != 0) ::_exit(126);
         ::execv(argv[0], argv.data());
         ::_exit(127);
     }
@@ -112,7 +132,7 @@ WorkerOutput run_worker(const std::vector<std::string>& verb_arguments, double s
     ::close(err[1]);
     if (pid < 0) {
         ::close(out[0]), ::close(err[0]);
-        return fail(std::string("could not start its worker: ") + std::strerror(errno));
+        return fail("could not start its " + what + ": " + std::strerror(errno));
     }
     std::string& text = result.text;
     std::string errors;
@@ -164,12 +184,12 @@ WorkerOutput run_worker(const std::vector<std::string>& verb_arguments, double s
         result.interrupted = true;
         return result;
     }
-    if (timed_out) return fail(fmt::format("exceeded the run time limit of {:g} s (--run-timeout); its worker was killed", seconds));
-    if (too_much) return fail(fmt::format("its worker wrote more than {} MB as its result; it was killed", max_worker_output >> 20));
+    if (timed_out) return fail(fmt::format("exceeded the run time limit of {:g} s (--run-timeout); its {} was killed", seconds, what));
+    if (too_much) return fail(fmt::format("its {} wrote more than {} MB on its standard output; it was killed", what, max_worker_output >> 20));
     if (WIFSIGNALED(status))
-        return fail(fmt::format("crashed: signal {} ({}) in its worker process", WTERMSIG(status), ::strsignal(WTERMSIG(status))));
+        return fail(fmt::format("crashed: signal {} ({}) in its {} process", WTERMSIG(status), ::strsignal(WTERMSIG(status)), what));
     if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
-        return fail(fmt::format("its worker exited with status {} without a result{}", WIFEXITED(status) ? WEXITSTATUS(status) : -1,
+        return fail(fmt::format("its {} exited with status {} without a result{}", what, WIFEXITED(status) ? WEXITSTATUS(status) : -1,
                                 result.last_error_line));
     return result;
 }

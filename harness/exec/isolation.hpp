@@ -44,6 +44,10 @@ struct WorkerOutput {
     bool interrupted = false;
 };
 WorkerOutput run_worker(const std::vector<std::string>& verb_arguments, double seconds, std::size_t megabytes);
+// The same for any program (a client's): `args` is its argument vector (the first looked up on
+// PATH when it holds no '/'), started in `directory` (empty: this one); messages call it `what`.
+WorkerOutput run_program(std::vector<std::string> args, const std::string& directory, double seconds, std::size_t megabytes,
+                         const std::string& what);
 
 // The run made by a worker. Never throws for the run's own failure; an interrupt (SIGINT,
 // SIGTERM) kills the worker and returns an interrupted result within a tenth of a second.

@@ -227,8 +227,8 @@ RunResult run_one(const RunSpec& requested, const RunOptions& options) {
     switch (requested.kind) {
         case RunKind::reversal: r = run_reversal(requested); break;
         case RunKind::stability: r = run_stability_search(requested); break;
-        case RunKind::trajectory: r = run_trajectory(requested, options); break;
-        case RunKind::horizon: r = run_horizon(requested); break;
+        case RunKind::trajectory: r = run_trajectory(requested, options, registered_scheme(requested.scheme)); break;
+        case RunKind::horizon: r = run_horizon(requested, registered_scheme(requested.scheme)); break;
         case RunKind::amplification: r = run_amplification(requested); break;
         case RunKind::spectral: r = run_spectral(requested); break;
         case RunKind::states: r = run_states(requested, options); break;
@@ -237,8 +237,9 @@ RunResult run_one(const RunSpec& requested, const RunOptions& options) {
     return r;
 }
 
-RunResult run_trajectory(const RunSpec& requested, const RunOptions& options) {
-    const auto& scheme_entry = SchemeRegistry::instance().at(requested.scheme, "scheme");
+SchemeFactory registered_scheme(const std::string& id) { return SchemeRegistry::instance().at(id, "scheme").make; }
+
+RunResult run_trajectory(const RunSpec& requested, const RunOptions& options, const SchemeFactory& make) {
     const auto scene = scene_of(requested);
     RunResult result{requested, {}, {}};
     result.spec.t_end = scene->t_end();
@@ -251,7 +252,7 @@ RunResult run_trajectory(const RunSpec& requested, const RunOptions& options) {
     std::vector<Checkpoint> checkpoints;
     try {
         Bodies bodies = scene->initial_state();
-        std::unique_ptr<RotationScheme> scheme = scheme_entry.make();
+        std::unique_ptr<RotationScheme> scheme = make();
         TimedScheme* timed = nullptr;
         if (scene->times_in_run()) scheme = std::make_unique<TimedScheme>(std::move(scheme)), timed = static_cast<TimedScheme*>(scheme.get());
         const double loop_start = thread_cpu_seconds();
@@ -299,7 +300,7 @@ RunResult run_trajectory(const RunSpec& requested, const RunOptions& options) {
         cpu = median_cpu_seconds([&] {
             for (const Checkpoint& start : checkpoints) {
                 Bodies bodies = start.bodies;
-                auto scheme = scheme_entry.make();
+                auto scheme = make();
                 std::int64_t evals = 0;
                 simulate(*scene, *scheme, bodies, dt, sampling.segment_steps(), evals,
                          [](std::int64_t, double, const Bodies&) { return !interrupt_signal(); }, start.step);

@@ -3,10 +3,19 @@
 
 #include "harness/exec/run.hpp"
 
+#include <functional>
+#include <memory>
+#include <string>
+
 namespace rotbench {
 
+// What makes the run's scheme: the registry's factory, or a client's replay of its program's
+// trajectory (harness/exec/client_run.hpp).
+using SchemeFactory = std::function<std::unique_ptr<RotationScheme>()>;
+SchemeFactory registered_scheme(const std::string& id);
+
 // From t = 0 to t_end: errors against the reference, drifts, cost (harness/exec/run.cpp).
-RunResult run_trajectory(const RunSpec& spec, const RunOptions& options);
+RunResult run_trajectory(const RunSpec& spec, const RunOptions& options, const SchemeFactory& make);
 
 // Forward to t_end with dt, then back with -dt from where the forward steps ended, the scheme
 // keeping its memory: a time-reversible scheme returns to the initial state to round-off.
@@ -16,7 +25,7 @@ RunResult run_reversal(const RunSpec& spec);
 
 // Bounded energy: the largest energy error over the scene's duration T (energy_drift_first)
 // and over energy_horizon x T (energy_drift_horizon), at dt; spec.t_end is T.
-RunResult run_horizon(const RunSpec& spec);
+RunResult run_horizon(const RunSpec& spec, const SchemeFactory& make);
 
 // The largest stable dt of the scheme on a stability scene, by bracketing and bisection
 // (harness/exec/stability.hpp). Metrics: dt_empirical, dt_peng, stability_ratio.

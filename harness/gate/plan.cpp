@@ -3,6 +3,7 @@
 #include "harness/gate/gate.hpp"
 
 #include "harness/scenes/scene.hpp"
+#include "harness/store/client.hpp"
 #include "schemes/scheme.hpp"
 
 #include <algorithm>
@@ -57,6 +58,7 @@ public:
                     plan_.warnings.push_back(scheme + " registers no claims (SchemeClaims): it is held to the generic sanity "
                                                       "checks only (order at least 0.8, angular momentum within 5 %)");
                 for (const auto& scene : section.free_scenes) {
+                    if (skipped(scheme, scene)) continue;
                     const auto runs = ladder(scene, scheme, dts(scene));
                     add({"sanity_order", "sanity", "sanity_order", scene, scheme, runs, std::numeric_limits<std::size_t>::max(), 0,
                          section.location});
@@ -64,11 +66,13 @@ public:
                          std::numeric_limits<std::size_t>::max(), 0, section.location});
                 }
                 for (const auto& scene : section.torque_scenes)
-                    add({"sanity_order", "sanity", "sanity_order", scene, scheme, ladder(scene, scheme, dts(scene)),
+                    if (!skipped(scheme, scene))
+                        add({"sanity_order", "sanity", "sanity_order", scene, scheme, ladder(scene, scheme, dts(scene)),
                          std::numeric_limits<std::size_t>::max(), 0, section.location});
                 continue;
             }
             for (const auto& scene : section.free_scenes) {
+                if (skipped(scheme, scene)) continue;
                 const auto runs = ladder(scene, scheme, dts(scene));
                 if (c.without_torque.order > 0) claim("order_without_torque", scene, runs, c.without_torque.order);
                 if (c.exact_without_torque) claim("exact_without_torque", scene, runs);
@@ -76,6 +80,7 @@ public:
                 if (c.time_reversible) claim("time_reversible", scene, {reversal(scene, scheme)});
             }
             for (const auto& scene : section.torque_scenes) {
+                if (skipped(scheme, scene)) continue;
                 if (c.with_torque.order > 0) claim("order_with_torque", scene, ladder(scene, scheme, dts(scene)), c.with_torque.order);
                 if (c.bounded_energy)  // the coarsest step of the ladder
                     claim("bounded_energy", scene, {run({scene, scheme, dts(scene).front(), 0.0, {}, RunKind::horizon, false})});
@@ -88,6 +93,11 @@ public:
         for (std::size_t i = 0; i < file_.checks.size(); ++i) {
             const GateCheck& c = file_.checks[i];
             for (const auto& scheme : c.schemes) {
+                if (skipped(scheme, c.scene)) continue;
+                if (c.criterion == "max_cost_ratio" && client_of(scheme)) {
+                    plan_.warnings.push_back(c.name + ": client " + scheme + "'s cost is its program's, not measured: not judged");
+                    continue;
+                }
                 std::vector<std::size_t> runs;
                 if (c.criterion == "min_order") {
                     runs = ladder(c.scene, scheme, c.dts.empty() ? make_scene(c.scene, c.params)->default_dts() : c.dts, c.t_end, c.params);
@@ -117,6 +127,13 @@ public:
     }
 
 private:
+    // A client that does not take the scene: said in a warning, and nothing planned.
+    bool skipped(const std::string& scheme, const std::string& scene) {
+        const std::string why = why_not_taken(scheme, scene);
+        if (!why.empty() && std::find(plan_.warnings.begin(), plan_.warnings.end(), why + ": not judged there") == plan_.warnings.end())
+            plan_.warnings.push_back(why + ": not judged there");
+        return !why.empty();
+    }
     std::vector<double> dts(const std::string& scene) { return make_scene(scene)->default_dts(); }
     std::size_t reversal(const std::string& scene, const std::string& scheme) {
         return run({scene, scheme, dts(scene).front(), 0.0, {}, RunKind::reversal, false});

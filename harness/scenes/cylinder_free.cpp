@@ -42,6 +42,7 @@ public:
         b.force.set(0, Vec3::Zero());
         b.torque.set(0, Vec3::Zero());
     }
+    std::optional<TorqueLaw> torque_law() const override { return TorqueLaw{}; }
 
     ReferenceState exact(std::size_t, double t) const override {
         return {exact_->orientation(t), exact_->omega_world(t)};

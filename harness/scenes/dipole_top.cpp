@@ -47,6 +47,8 @@ public:
         return {{"rotational", rotational_energy(b)}, {"potential", potential(b)}};
     }
 
+    std::optional<TorqueLaw> torque_law() const override { return TorqueLaw{"dipole", {{"dipole_body", dipole_}, {"field_world", field_}}}; }
+
 private:
     double potential(const Bodies& b) const { return -to_world(b.orientation[0], dipole_).dot(field_); }
     Vec3 inertia_, dipole_, field_;

@@ -20,6 +20,7 @@ public:
         b.torque.set(0, Vec3::Zero());
     }
     ReferenceState exact(std::size_t, double t) const override { return {exact_->orientation(t), exact_->omega_world(t)}; }
+    std::optional<TorqueLaw> torque_law() const override { return TorqueLaw{}; }
 
 protected:
     // Called by the scene's prepare() once it has read its parameters.

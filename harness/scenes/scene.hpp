@@ -60,6 +60,16 @@ struct SceneTraits {
     bool stability = false;     // a StabilityProbe (stability_probe.hpp): a scene of the stability study; set by type
 };
 
+// A one-body scene's torque as data, for a program outside rotbench that integrates the scene
+// (a client, harness/exec/client_run.hpp): its law by name and its parameters, each a 3-vector.
+//   none           no torque;
+//   body_constant  a constant torque `torque_body` in the body frame;
+//   dipole         T = R mu' x B: a dipole `dipole_body` in a uniform field `field_world`.
+struct TorqueLaw {
+    std::string law = "none";
+    std::vector<std::pair<std::string, Vec3>> parameters;
+};
+
 // The bodies, their initial state and their force/torque model come from Dynamics
 // (references/dynamics.hpp), which the Odeint reference integrates.
 class Scene : public Dynamics {
@@ -106,6 +116,9 @@ public:
     bool conserves_angular_momentum() const { return traits_.conserves_angular_momentum; }
     bool torque_depends_on_orientation() const { return traits_.torque_depends_on_orientation; }
     bool times_in_run() const { return traits_.times_in_run; }
+    // Its torque as data when it is one body under one of the laws of TorqueLaw; none otherwise
+    // (several bodies, contacts, walls), and then no client can take it.
+    virtual std::optional<TorqueLaw> torque_law() const { return std::nullopt; }
     // A fresh probe for each measured run; none for most scenes.
     virtual std::unique_ptr<SceneProbe> make_probe() const { return nullptr; }
 

@@ -42,6 +42,7 @@ public:
     }
 
     bool conserves_energy() const override { return false; }  // the torque does work
+    std::optional<TorqueLaw> torque_law() const override { return TorqueLaw{"body_constant", {{"torque_body", Vec3(0.0, 0.0, torque_)}}}; }
     bool gains_energy() const override { return true; }
     std::optional<Vec3> exact_omega_body(std::size_t, double t) const override {
         const Vec3 w0 = params.vec3("omega0");

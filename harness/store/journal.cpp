@@ -1,6 +1,7 @@
 #include "harness/store/journal.hpp"
 
 #include "harness/store/parse.hpp"
+#include "harness/store/client.hpp"
 #include "harness/store/plugin.hpp"
 #include "harness/store/output_files.hpp"
 #include "harness/store/run_record.hpp"
@@ -23,6 +24,7 @@ std::string read_text(const fs::path& path) { return read_input_file(path, "cann
 std::string plugins_text() {
     std::string text;
     for (const auto& p : loaded_plugins()) text += p.hash + "\t" + p.path + "\n";
+    for (const auto& c : loaded_clients()) text += c.hash + "\t" + c.path + "\n";
     return text;
 }
 
@@ -69,8 +71,8 @@ Journal Journal::reopen(const OutputDir& out) {
     if (!journal_exists(out_dir)) throw InputError("--resume " + out_dir.string() + ": no interrupted run there (no partial/command)");
     if (fs::exists(dir / "plugins") && read_text(dir / "plugins") != plugins_text())
         throw InputError("--resume " + out_dir.string() +
-                         ": a plug-in has changed since the run was interrupted (partial/plugins "
-                         "names each with its hash); run it again with --overwrite");
+                         ": a plug-in or client file has changed since the run was interrupted "
+                         "(partial/plugins names each with its hash); run it again with --overwrite");
     // A record cut short by a kill would sit between the runs appended from now on: cut it off.
     const fs::path runs = out.claim("partial/runs.jsonl");
     std::size_t count = 0;

@@ -72,4 +72,9 @@ std::vector<double> parse_nonnegative_list(const std::string& text, const std::s
     });
 }
 
+bool is_id(const std::string& text) {
+    return !text.empty() &&
+           std::all_of(text.begin(), text.end(), [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; });
+}
+
 }  // namespace rotbench

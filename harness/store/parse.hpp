@@ -27,6 +27,8 @@ std::vector<std::string> parse_id_list(const std::string& text, const Registry<P
                                        const std::string& kind);
 
 std::vector<std::string> split_commas(const std::string& text);
+// An id as schemes, scenes and metrics have them: letters, digits and underscores, not empty.
+bool is_id(const std::string& text);
 std::vector<std::string> split_on(const std::string& text, char separator);
 
 }  // namespace rotbench

@@ -5,6 +5,8 @@
 
 #include "harness/store/output_files.hpp"
 
+#include "harness/store/parse.hpp"
+
 #include <algorithm>
 #include <cctype>
 #include <cstdint>
@@ -21,9 +23,6 @@ std::vector<LoadedPlugin>& plugins() {
     return list;
 }
 
-bool is_id(const std::string& s) {
-    return !s.empty() && std::all_of(s.begin(), s.end(), [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; });
-}
 
 }  // namespace
 

@@ -50,11 +50,6 @@ std::string runs_csv(const std::vector<RunResult>& results) {
 
 namespace {
 
-// An id as the registries hold them: letters, digits and underscores.
-bool is_id(const std::string& s) {
-    return !s.empty() && std::all_of(s.begin(), s.end(), [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; });
-}
-
 // What a run store of rotbench's holds: ids, and steps and durations in range. A store cut,
 // edited or written by something else is refused, never taken for results.
 void check_run(const RunResult& r, const std::string& at) {

@@ -1,0 +1,144 @@
+#include "harness/exec/client_run.hpp"
+
+#include "harness/exec/run_kinds.hpp"
+#include "harness/store/client.hpp"
+#include "harness/store/csv.hpp"
+#include "harness/store/output_files.hpp"
+
+#include <array>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+namespace rotbench {
+namespace {
+
+namespace fs = std::filesystem;
+using Row = std::array<double, 8>;
+
+// The program's trajectory, stepped through as if a scheme made it: each step takes the next row.
+class Replay final : public RotationScheme {
+public:
+    explicit Replay(const std::vector<Row>& rows) : rows_(rows) {}
+    void start(const Bodies&) override { next_ = 1; }
+    void predict(Bodies& b, double) override {
+        const Row& r = rows_.at(next_++);
+        b.orientation.set(0, Quat(r[1], r[2], r[3], r[4]));
+        b.omega.set(0, Vec3(r[5], r[6], r[7]));
+    }
+    void correct(Bodies&, double) override {}
+
+private:
+    const std::vector<Row>& rows_;
+    std::size_t next_ = 1;
+};
+
+// A directory of rotbench's own for one run of the program; removed, with all it holds, when it goes.
+struct Scratch {
+    fs::path path;
+    Scratch() {
+        const fs::path base = std::getenv("TMPDIR") && *std::getenv("TMPDIR") ? std::getenv("TMPDIR") : "/tmp";
+        std::string pattern = (base / "rotbench-client-XXXXXX").string();
+        if (!::mkdtemp(pattern.data())) throw OutputError("cannot make a scratch directory in " + base.string());
+        path = pattern;
+    }
+    ~Scratch() {
+        std::error_code ec;
+        fs::remove_all(path, ec);
+    }
+};
+
+nlohmann::json vec(const Vec3& v) { return {v.x(), v.y(), v.z()}; }
+
+// The rows of the program's trajectory, or why they are not one.
+std::string read_rows(const fs::path& file, std::int64_t steps, double dt, std::vector<Row>& rows) {
+    if (!fs::exists(file)) return "its program wrote no trajectory.csv";
+    try {
+        const std::string name = "its trajectory.csv";
+        const auto records = read_csv(read_input_file(file, name), name, client_trajectory_header);
+        if (static_cast<std::int64_t>(records.size()) != steps + 1)
+            return fmt::format("its trajectory has {} rows; {} are due, one at every step t = k dt, k = 0 ... {}", records.size(), steps + 1, steps);
+        for (std::size_t k = 0; k < records.size(); ++k) {
+            Row row;
+            for (std::size_t c = 0; c < row.size(); ++c) {
+                row[c] = csv_number(records[k][c], where(name, records[k]));
+                if (!std::isfinite(row[c])) return fmt::format("{}: a value that is not finite ({})", where(name, records[k]), records[k][c]);
+            }
+            const double t = static_cast<double>(k) * dt;
+            if (std::abs(row[0] - t) > 1e-9 * std::max(1.0, std::abs(t)))
+                return fmt::format("{}: t = {} where step {} is at t = {}", where(name, records[k]), records[k][0], k, format_number(t));
+            rows.push_back(row);
+        }
+    } catch (const InputError& e) {
+        return std::string("its trajectory is malformed: ") + e.what();
+    }
+    return "";
+}
+
+}  // namespace
+
+std::string client_scene_json(const Scene& scene, const RunSpec& spec, double t_end, std::int64_t steps) {
+    const auto law = scene.torque_law();
+    const Bodies b = scene.initial_state();
+    if (!law || b.size() != 1) throw InputError("scene '" + spec.scene + "' is not one body under a torque law a client can take");
+    const Quat q0 = b.orientation[0];
+    const Vec3 inertia = b.inertia[0], w_world = b.omega[0], w_body = to_body(q0, w_world);
+    const Vec3 l_body = inertia.cwiseProduct(w_body);
+    nlohmann::json torque = {{"law", law->law}};
+    for (const auto& [name, value] : law->parameters) torque[name] = vec(value);
+    nlohmann::json params = nlohmann::json::object();
+    for (const auto& [key, values] : spec.params) params[key] = values;
+    const nlohmann::json j = {{"format", "rotbench-client-scene 1"},
+                              {"scene", spec.scene},
+                              {"params", params},
+                              {"mass", b.mass[0]},
+                              {"inertia_body", vec(inertia)},
+                              {"q0", {q0.w(), q0.x(), q0.y(), q0.z()}},
+                              {"omega0_world", vec(w_world)},
+                              {"omega0_body", vec(w_body)},
+                              {"L0_world", vec(to_world(q0, l_body))},
+                              {"L0_body", vec(l_body)},
+                              {"torque", torque},
+                              {"dt", spec.dt},
+                              {"t_end", t_end},
+                              {"steps", steps},
+                              {"columns", client_trajectory_header}};
+    return j.dump(2) + "\n";
+}
+
+RunResult run_client(const RunSpec& requested, const RunOptions& options, const IsolationLimits& limits) {
+    const LoadedClient& client = *client_of(requested.scheme);
+    const auto scene = scene_of(requested);
+    RunResult failed{requested, {}, {}};
+    failed.spec.t_end = scene->t_end();
+    const auto fail = [&](const std::string& why) {
+        failed.failure = why;
+        failed.metrics = {{metric::unstable, 1.0}};
+        return failed;
+    };
+    if (requested.kind != RunKind::trajectory && requested.kind != RunKind::horizon)
+        return fail(fmt::format("a client makes runs of kind trajectory and horizon, not {}", kind_name(requested.kind)));
+    if (std::find(client.scenes.begin(), client.scenes.end(), requested.scene) == client.scenes.end())
+        return fail(fmt::format("client {} does not take scene {} (its client file lists {})", client.id, requested.scene,
+                                join(client.scenes, ", ")));
+    const double t_end = requested.kind == RunKind::horizon ? energy_horizon * scene->t_end() : scene->t_end();
+    const std::int64_t steps = step_count(t_end, requested.dt);
+    const Scratch scratch;
+    write_file_atomically(scratch.path / "scene.json", client_scene_json(*scene, requested, t_end, steps));
+    std::vector<std::string> args = client.program;
+    args.insert(args.end(), {"scene.json", "trajectory.csv"});
+    const double seconds = limits.seconds > 0 ? limits.seconds : 60.0 + 10.0 * 1e-5 * static_cast<double>(steps);
+    const WorkerOutput out = run_program(args, scratch.path.string(), seconds, limits.megabytes ? limits.megabytes : isolation_memory(1), "program");
+    if (out.interrupted) return RunResult{failed.spec, {}, {}, true};
+    if (!out.failure.empty()) return fail(out.failure);
+    std::vector<Row> rows;
+    if (const std::string why = read_rows(scratch.path / "trajectory.csv", steps, requested.dt, rows); !why.empty())
+        return fail(why + out.last_error_line);
+    const SchemeFactory replay = [&rows] { return std::make_unique<Replay>(rows); };
+    if (requested.kind == RunKind::horizon) return run_horizon(requested, replay);
+    return run_trajectory(requested, {.measure_time = false, .series_samples = options.series_samples}, replay);
+}
+
+}  // namespace rotbench

@@ -1,0 +1,29 @@
+// A client's run (harness/store/client.hpp): rotbench writes the scene as data (scene.json) in a
+// scratch directory of its own, starts the client's program there with `scene.json
+// trajectory.csv` after its arguments, under the run limits of an isolated worker, reads back the
+// trajectory it wrote, and judges it exactly like a built-in run: the trajectory is replayed
+// step by step through the same loop, the same metrics against the same reference. The scratch
+// directory, with whatever the program left in it, is removed afterwards. docs/clients.md.
+#pragma once
+
+#include "harness/exec/isolation.hpp"
+#include "harness/exec/run.hpp"
+
+#include <string>
+
+namespace rotbench {
+
+// The columns a client writes: time, the orientation (body to world, w first; q and -q are the
+// same orientation) and the world angular velocity, one row at every step t = k dt, k = 0 ... N.
+inline constexpr const char* client_trajectory_header = "t,qw,qx,qy,qz,wx,wy,wz";
+
+// The scene's spec as a client reads it, for a run of `steps` steps of `dt` (t_end = steps dt,
+// to within round-off). InputError when the scene is not one body under a TorqueLaw.
+std::string client_scene_json(const Scene& scene, const RunSpec& spec, double t_end, std::int64_t steps);
+
+// Runs of kind trajectory and horizon; any other kind, a scene the client file does not list, a
+// program that fails, hangs or writes a trajectory that is malformed, short, or not finite is a
+// failed run saying which. Timing metrics are not measured (the program's cost is its own).
+RunResult run_client(const RunSpec& spec, const RunOptions& options, const IsolationLimits& limits);
+
+}  // namespace rotbench

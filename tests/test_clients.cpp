@@ -1,0 +1,188 @@
+// Clients (docs/clients.md): a scheme run by a program outside rotbench is swept, gated and judged
+// like a built-in one; a program that writes garbage, hangs or crashes is one failed run; a bad
+// client file is refused in one line. The program of these tests is rotbench itself, behind
+// tests/clients/rotbench_client.py, so its runs must equal the built-in's bit for bit.
+#include "cli_helpers.hpp"
+#include "harness/exec/client_run.hpp"
+#include "harness/exec/executor.hpp"
+#include "harness/store/client.hpp"
+
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <cstdlib>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+using namespace rotbench;
+using namespace rotbench::test;
+
+namespace {
+
+const std::string script = std::string(ROTBENCH_SOURCE_DIR) + "/tests/clients/rotbench_client.py";
+
+// A client file for rotbench's own `scheme` behind the test script, with a fault when given.
+fs::path client_file(const fs::path& dir, const std::string& id, const std::string& scheme, const std::string& fault = "",
+                     const std::string& extra = "claims = \"no_squish\"\n") {
+    fs::create_directories(dir);
+    const fs::path file = dir / (id + ".toml");
+    std::string program = "\"python3\", \"" + script + "\", \"" + ROTBENCH_EXE + "\", \"" + scheme + "\"";
+    if (!fault.empty()) program += ", \"" + fault + "\"";
+    write(file, "id = \"" + id + "\"\nprogram = [" + program + "]\nscenes = [\"asymmetric_free\", \"dipole_top\", \"torqued_cylinder\"]\n" + extra);
+    return file;
+}
+
+RunResult made(const RunSpec& spec) {
+    std::ostringstream out, err;
+    Executor executor(out, err, {.run = {.measure_time = false}, .quiet = true});
+    return executor.run(spec);
+}
+
+}  // namespace
+
+TEST_CASE("clients: a client whose program is rotbench's own scheme gives the built-in's metrics, bit for bit") {
+    const fs::path dir = fresh_dir("client_same");
+    load_client(client_file(dir, "client_no_squish", "no_squish").string());
+    for (const RunSpec& spec : {RunSpec{"asymmetric_free", "no_squish", 0.05, 0.0}, RunSpec{"dipole_top", "no_squish", 0.01, 0.0},
+                                RunSpec{"torqued_cylinder", "no_squish", 0.01, 0.0}, RunSpec{"dipole_top", "no_squish", 0.01, 0.0, {}, RunKind::horizon}}) {
+        RunSpec through = spec;
+        through.scheme = "client_no_squish";
+        const RunResult a = made(spec), b = made(through);
+        INFO(spec.scene << " " << kind_name(spec.kind) << ": " << b.failure);
+        REQUIRE(b.failure.empty());
+        std::size_t compared = 0;
+        for (const auto& [name, value] : a.metrics) {
+            if (is_timing_metric(name)) continue;
+            INFO(name << " " << value << " " << b.value(name));
+            CHECK(b.has(name));
+            CHECK((value == b.value(name) || (std::isnan(value) && std::isnan(b.value(name)))));
+            ++compared;
+        }
+        CHECK(compared >= (spec.kind == RunKind::horizon ? 2u : 10u));
+    }
+    fs::remove_all(dir);
+}
+
+TEST_CASE("clients: a program that writes garbage, a short or non-finite trajectory, hangs or crashes is one failed run") {
+    const fs::path dir = fresh_dir("client_faults");
+    const fs::path scratch = dir / "tmp";
+    fs::create_directories(scratch);
+    ::setenv("TMPDIR", scratch.c_str(), 1);
+    const std::vector<std::pair<std::string, std::string>> faults = {
+        {"--garbage", "its trajectory is malformed: its trajectory.csv:1: expected the header 't,qw,qx,qy,qz,wx,wy,wz'"},
+        {"--short", "its trajectory has 200 rows; 201 are due, one at every step t = k dt, k = 0 ... 200"},
+        {"--nan", "its trajectory.csv:102: a value that is not finite (nan)"},
+        {"--crash", "crashed: signal 11 (Segmentation fault) in its program process"},
+    };
+    for (const auto& [fault, message] : faults) {
+        const std::string id = "client" + std::string(fault.begin() + 2, fault.end());
+        load_client(client_file(dir, id, "direct", fault).string());
+        const RunResult r = made({"asymmetric_free", id, 0.1, 0.0});
+        INFO(fault);
+        CHECK_THAT(r.failure, Catch::StartsWith(message));
+        CHECK(r.value(metric::unstable) == 1.0);
+    }
+    load_client(client_file(dir, "client_hang", "direct", "--hang").string());
+    std::ostringstream out, err;
+    Executor executor(out, err, {.run = {.measure_time = false, .run_timeout = 1.5}, .quiet = true});
+    CHECK(executor.run(RunSpec{"asymmetric_free", "client_hang", 0.1, 0.0}).failure ==
+          "exceeded the run time limit of 1.5 s (--run-timeout); its program was killed");
+    // A scene the client file does not list, and a kind a client does not make.
+    CHECK_THAT(made({"cylinder_free", "client_hang", 0.1, 0.0}).failure, Catch::StartsWith("client client_hang does not take scene cylinder_free"));
+    CHECK(made({"asymmetric_free", "client_hang", 0.1, 0.0, {}, RunKind::reversal}).failure ==
+          "a client makes runs of kind trajectory and horizon, not reversal");
+    CHECK(fs::is_empty(scratch));  // every scratch directory is gone, with what the programs left there
+    ::unsetenv("TMPDIR");
+    fs::remove_all(dir);
+}
+
+TEST_CASE("clients: the scene spec holds the body, its initial state in both frames and its torque law") {
+    const auto scene = make_scene("dipole_top", {{"field", {0.0, 0.5, 1.0}}});
+    const auto spec = nlohmann::json::parse(client_scene_json(*scene, {"dipole_top", "x", 0.01, 10.0}, 10.0, 1000));
+    const Bodies b = scene->initial_state();
+    const Quat q0 = b.orientation[0];
+    CHECK(spec.at("steps") == 1000);
+    CHECK(spec.at("columns") == "t,qw,qx,qy,qz,wx,wy,wz");
+    CHECK(spec.at("q0") == std::vector<double>{q0.w(), q0.x(), q0.y(), q0.z()});
+    CHECK(spec.at("torque").at("law") == "dipole");
+    CHECK(spec.at("torque").at("field_world") == std::vector<double>{0.0, 0.5, 1.0});
+    // L0 in the world frame is the body-frame L0 rotated by q0, which is I' times the body-frame w0.
+    const auto v = [&](const char* key) {
+        const auto a = spec.at(key).get<std::vector<double>>();
+        return Vec3(a[0], a[1], a[2]);
+    };
+    CHECK((to_world(q0, v("L0_body")) - v("L0_world")).norm() < 1e-15 * v("L0_world").norm());  // one rotation's round-off
+    CHECK(v("L0_body") == v("inertia_body").cwiseProduct(v("omega0_body")));
+    CHECK_THROWS_WITH(client_scene_json(*make_scene("sphere_pair"), {"sphere_pair", "x", 1e-5, 0.0}, 1e-3, 100),
+                      Catch::Contains("not one body under a torque law a client can take"));
+}
+
+TEST_CASE("clients: every scene that states its torque law gives, by that law, the torque it applies") {
+    for (const auto& id : SceneRegistry::instance().ids()) {
+        const auto scene = make_scene(id);
+        const auto law = scene->torque_law();
+        if (!law) continue;
+        INFO(id);
+        Bodies b = scene->initial_state();
+        REQUIRE(b.size() == 1);
+        b.orientation.set(0, Quat(0.8, 0.1, -0.5, 0.3).normalized());  // away from the initial orientation
+        scene->evaluate_forces(b, 0.0);
+        Vec3 expected = Vec3::Zero();
+        const auto parameter = [&](const std::string& name) {
+            for (const auto& [n, value] : law->parameters)
+                if (n == name) return value;
+            FAIL("no parameter " << name);
+            return Vec3();
+        };
+        if (law->law == "body_constant") expected = to_world(b.orientation[0], parameter("torque_body"));
+        else if (law->law == "dipole") expected = to_world(b.orientation[0], parameter("dipole_body")).cross(parameter("field_world"));
+        else REQUIRE(law->law == "none");
+        CHECK((b.torque[0] - expected).norm() <= 1e-15 * std::max(1.0, expected.norm()));
+    }
+}
+
+TEST_CASE("clients: a bad client file is refused in one line naming the file, line and column") {
+    const fs::path dir = fresh_dir("client_bad");
+    fs::create_directories(dir);
+    const auto refused = [&](const std::string& text) {
+        write(dir / "c.toml", text);
+        const Cli r = cli({"--client", (dir / "c.toml").string(), "list"});
+        CHECK(r.status == 2);
+        CHECK(one_line(r.err));
+        return r.err;
+    };
+    const std::string ok = "id = \"c\"\nprogram = [\"true\"]\nscenes = [\"asymmetric_free\"]\n";
+    CHECK_THAT(refused("id = \"c\"\n"), Catch::Contains("c.toml:1:1: the client file has no 'program'"));
+    CHECK_THAT(refused(ok + "claims = \"rk4\"\n"), Catch::Contains("c.toml:4:10: claims = 'rk4': not a built-in scheme"));
+    CHECK_THAT(refused(ok + "claims = \"fincham\"\ncolour = 1\n"), Catch::Contains("c.toml:5:10: unknown key 'colour'"));
+    CHECK_THAT(refused(ok + "claims = \"fincham\"\nsound = false\n"), Catch::Contains("sound = false needs an unsound_reason"));
+    CHECK_THAT(refused(ok + "[claims]\norder_with_torque = 9\n"), Catch::Contains("'order_with_torque' must be an order from 0 to 8"));
+    CHECK_THAT(refused("id = \"direct\"\nprogram = [\"true\"]\nscenes = [\"asymmetric_free\"]\nclaims = \"direct\"\n"),
+               Catch::Contains("c.toml:1:6: scheme 'direct' is already registered"));
+    CHECK_THAT(refused(ok + "claims = \"fincham\"\nscenes2 = 1\n"), Catch::Contains("unknown key 'scenes2'"));
+    CHECK_THAT(refused("id = \"c\"\nprogram = [\"true\"]\nscenes = [\"asymmetric_fre\"]\nclaims = \"direct\"\n"),
+               Catch::Contains("unknown scene 'asymmetric_fre'"));
+    fs::remove_all(dir);
+}
+
+TEST_CASE("clients: `run --client` sweeps a client beside the built-ins and says which scenes it skips") {
+    const fs::path dir = fresh_dir("client_run");
+    const fs::path file = client_file(dir, "client_no_squish", "no_squish");
+    const Cli r = cli({"--client", file.string(), "run", "--scenes", "asymmetric_free,cylinder_free", "--schemes", "no_squish,client_no_squish",
+                       "--quick", "--quiet", "--out", (dir / "out").string()});
+    INFO(r.err);
+    REQUIRE(r.status == 0);
+    CHECK_THAT(r.out, Catch::Contains("skipped: client client_no_squish does not take scene cylinder_free"));
+    const std::string orders = read(dir / "out" / "orders.csv");
+    CHECK_THAT(orders, Catch::Contains("asymmetric_free,client_no_squish,omega_err_max,fit,2.00"));
+    fs::remove_all(dir);
+}
+
+TEST_CASE("clients: the example client, the midpoint rule in Python, holds its claimed order 2 in the default gate") {
+    const Cli r = cli({"--client", std::string(ROTBENCH_SOURCE_DIR) + "/examples/clients/python_rk2/client.toml", "gate", DEFAULT_GATE,
+                       "--schemes", "python_rk2"});
+    INFO(r.out << r.err);
+    CHECK(r.status == 0);
+    CHECK_THAT(r.out, Catch::Contains("PASS dipole_top/python_rk2: python_rk2: order_with_torque on dipole_top: observed order 2.00"));
+    CHECK_THAT(r.out, Catch::Contains("4 checks: 4 passed, 0 failed"));
+    CHECK_THAT(r.out, Catch::Contains("WARNING client python_rk2 does not take scene sphere_pair"));
+}
