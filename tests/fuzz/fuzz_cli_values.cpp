@@ -3,7 +3,9 @@
 // sweep it sets up (the scene checks the value).
 #include "harness/cli/config.hpp"
 #include "harness/store/parse.hpp"
+#include "harness/scenes/scene.hpp"
 #include "harness/store/shard.hpp"
+#include "schemes/scheme.hpp"
 #include "tests/fuzz/fuzz_input.hpp"
 
 using namespace rotbench;
