@@ -1,5 +1,7 @@
 #include "reports/markdown_report.hpp"
 
+#include "reports/clients_report.hpp"
+
 #include "reports/cost_table.hpp"
 #include "reports/granular_report.hpp"
 #include "reports/provenance.hpp"
@@ -244,6 +246,7 @@ std::string markdown_report(const ResultSet& set, const std::string& command_lin
           link("Metrics and the order fit", "Metrics and the order fit") + "\n\n";
 
     md += verdict_section(set, orders, options.stability);
+    md += clients_section(set);
     md += answer_section(set, answers, options.tolerances);
     md += stability_summary(options.stability, set, dir);
     md += cost_section(dir.path());

@@ -186,3 +186,20 @@ TEST_CASE("clients: the example client, the midpoint rule in Python, holds its c
     CHECK_THAT(r.out, Catch::Contains("4 checks: 4 passed, 0 failed"));
     CHECK_THAT(r.out, Catch::Contains("WARNING client python_rk2 does not take scene sphere_pair"));
 }
+
+TEST_CASE("clients: the report says whether a client is its counterpart's map, to round-off, or another and why") {
+    const fs::path dir = fresh_dir("client_report");
+    const fs::path same = client_file(dir, "client_same", "no_squish", "", "claims = \"no_squish\"\ncounterpart = \"no_squish\"\n");
+    const fs::path other = client_file(dir, "client_other", "fincham", "",
+                                       "claims = \"fincham\"\ncounterpart = \"no_squish\"\ncounterpart_note = \"it is fincham, not no_squish\"\n");
+    const Cli r = cli({"--client", same.string(), "--client", other.string(), "run", "--scenes", "asymmetric_free", "--schemes",
+                       "client_same,client_other", "--quick", "--quiet", "--out", (dir / "out").string()});
+    INFO(r.err);
+    REQUIRE(r.status == 0);
+    const std::string md = read(dir / "out" / "report.md");
+    CHECK_THAT(md, Catch::Contains("| `client_same` | `no_squish` | `asymmetric_free` | 0 (dt 0.1) |"));
+    CHECK_THAT(md, Catch::Contains("| the same, to round-off |"));
+    // fincham against no_squish: two second-order maps, so their difference falls as dt^2.
+    CHECK_THAT(md, Catch::Contains("another map: the difference falls as dt^2.0") && Catch::Contains("it is fincham, not no_squish |"));
+    fs::remove_all(dir);
+}

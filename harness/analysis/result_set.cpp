@@ -1,10 +1,14 @@
 #include "harness/analysis/result_set.hpp"
 
+#include "harness/store/client.hpp"
+
 namespace rotbench {
 
 SchemeInfo scheme_info(const std::string& id) {
     const auto& e = SchemeRegistry::instance().at(id, "scheme");
-    return {e.id, e.summary, e.source, e.notes, e.extra};
+    const LoadedClient* client = client_of(id);
+    return {e.id,    e.summary, e.source, e.notes, e.extra, client != nullptr, client ? client->counterpart : "",
+            client ? client->counterpart_note : ""};
 }
 
 SceneInfo scene_info(const Scene& scene) {

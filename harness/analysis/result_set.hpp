@@ -25,6 +25,9 @@ struct SceneInfo {
 struct SchemeInfo {
     std::string id, summary, source, notes;
     SchemeClaims claims;
+    bool client = false;      // run by a program outside rotbench (harness/store/client.hpp)
+    std::string counterpart;  // a client's: the built-in scheme it should equal (empty: none)
+    std::string counterpart_note;  // why it is not that scheme's map, where it is not
 };
 
 struct ResultSet {

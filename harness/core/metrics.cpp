@@ -62,6 +62,10 @@ const std::vector<MetricInfo>& metric_table() {
         {.name = metric::stability_ratio, .kind = K::stability},
         {.name = metric::dt_amplification, .unit = "s", .kind = K::stability},
         {.name = metric::unstable_at_every_dt, .kind = K::flag},
+        {.name = metric::counterpart_omega_diff_max, .unit = "rad/s", .kind = K::error, .round_off = R::per_step_of_omega,
+         .meaning = "a client's max |w - w_counterpart| over the steps: its largest difference from the built-in scheme it should equal"},
+        {.name = metric::counterpart_angle_diff_max, .unit = "rad", .kind = K::error, .round_off = R::per_step,
+         .meaning = "a client's max rotation angle between its q and its counterpart's over the steps"},
         {.name = metric::ensemble_size, .kind = K::ensemble},
         {.name = metric::ensemble_failed, .kind = K::ensemble},
     };

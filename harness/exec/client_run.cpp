@@ -4,6 +4,7 @@
 #include "harness/store/client.hpp"
 #include "harness/store/csv.hpp"
 #include "harness/store/output_files.hpp"
+#include "schemes/quaternion.hpp"
 
 #include <array>
 #include <cmath>
@@ -77,6 +78,24 @@ std::string read_rows(const fs::path& file, std::int64_t steps, double dt, std::
     return "";
 }
 
+// The client's largest difference from its counterpart, the built-in scheme run on the same
+// scene at the same step: both states compared at every step.
+void add_counterpart_difference(RunResult& result, const Scene& scene, const std::string& counterpart, const std::vector<Row>& rows) {
+    Bodies b = scene.initial_state();
+    auto scheme = registered_scheme(counterpart)();
+    double omega_diff = 0, angle_diff = 0;
+    std::int64_t evals = 0;
+    const std::int64_t steps = static_cast<std::int64_t>(rows.size()) - 1;
+    simulate(scene, *scheme, b, result.spec.dt, steps, evals, [&](std::int64_t n, double, const Bodies& state) {
+        const Row& r = rows[static_cast<std::size_t>(n)];
+        omega_diff = std::max(omega_diff, (state.omega[0] - Vec3(r[5], r[6], r[7])).norm());
+        angle_diff = std::max(angle_diff, rotation_angle_between(state.orientation[0], Quat(r[1], r[2], r[3], r[4]).normalized()));
+        return std::isfinite(omega_diff) && std::isfinite(angle_diff);
+    });
+    result.metrics.emplace_back(metric::counterpart_omega_diff_max, omega_diff);
+    result.metrics.emplace_back(metric::counterpart_angle_diff_max, angle_diff);
+}
+
 }  // namespace
 
 std::string client_scene_json(const Scene& scene, const RunSpec& spec, double t_end, std::int64_t steps) {
@@ -138,7 +157,9 @@ RunResult run_client(const RunSpec& requested, const RunOptions& options, const 
         return fail(why + out.last_error_line);
     const SchemeFactory replay = [&rows] { return std::make_unique<Replay>(rows); };
     if (requested.kind == RunKind::horizon) return run_horizon(requested, replay);
-    return run_trajectory(requested, {.measure_time = false, .series_samples = options.series_samples}, replay);
+    RunResult result = run_trajectory(requested, {.measure_time = false, .series_samples = options.series_samples}, replay);
+    if (!client.counterpart.empty() && result.failure.empty()) add_counterpart_difference(result, *scene, client.counterpart, rows);
+    return result;
 }
 
 }  // namespace rotbench

@@ -132,11 +132,16 @@ std::string load_client(const std::string& path) {
             client.counterpart = text(path, key, v);
             if (!SchemeRegistry::instance().contains(client.counterpart) || client_of(client.counterpart))
                 toml_error(path, v, "counterpart '" + client.counterpart + "' is not a built-in scheme");
+        } else if (key == "counterpart_note") {
+            client.counterpart_note = text(path, key, v);
         } else {
-            toml_error(path, v, "unknown key '" + key + "'; valid keys: id, summary, program, scenes, claims, sound, unsound_reason, counterpart");
+            toml_error(path, v, "unknown key '" + key + "'; valid keys: id, summary, program, scenes, claims, sound, unsound_reason, "
+                                "counterpart, counterpart_note");
         }
     }
     if (!claims.sound && notes.empty()) toml_error(path, file, "sound = false needs an unsound_reason");
+    if (!client.counterpart_note.empty() && client.counterpart.empty())
+        toml_error(path, *file.get("counterpart_note"), "counterpart_note is given without a counterpart");
     if (claims.sound && !notes.empty()) toml_error(path, *file.get("unsound_reason"), "unsound_reason is given but sound is not false");
     const std::string id = client.id;
     SchemeRegistry::instance().add({id, summary, "a program outside rotbench: " + join(client.program, " "), notes,

@@ -12,7 +12,8 @@
 //   claims      = "no_squish"                        # a built-in scheme's claims, or a table [claims]
 //   sound       = false                              # optional: a code known to be wrong ...
 //   unsound_reason = "..."                           # ... and why (required with sound = false)
-//   counterpart = "no_squish"                        # optional: the built-in scheme it should equal
+//   counterpart = "no_squish"                        # optional: the built-in scheme it should equal ...
+//   counterpart_note = "..."                         # ... and, where it does not, why (for the report)
 //
 //   [claims]                                          # instead of claims = "id"; every key optional
 //   order_without_torque = 2
@@ -36,6 +37,7 @@ struct LoadedClient {
     std::vector<std::string> program;  // {dir} replaced
     std::vector<std::string> scenes;
     std::string counterpart;           // empty: none
+    std::string counterpart_note;      // why it is not the counterpart's map, where it is not
 };
 
 // Loads the file and registers its scheme; returns its id.

@@ -1,0 +1,16 @@
+// The report's section on clients (docs/clients.md): per client with a counterpart and per scene,
+// its largest difference from the built-in scheme it should equal over every step of its runs.
+#pragma once
+
+#include "harness/analysis/result_set.hpp"
+
+#include <string>
+
+namespace rotbench {
+
+inline const std::string clients_heading = "Real clients: codes run as shipped, against their counterparts";
+
+// Empty when no client with a counterpart has runs in the set.
+std::string clients_section(const ResultSet& set);
+
+}  // namespace rotbench
