@@ -141,12 +141,12 @@ TEST_CASE("an interrupted stability study keeps its finished runs, and run --res
 TEST_CASE("an interrupted advise keeps its finished runs, and run --resume gives the uninterrupted advice") {
     const fs::path dir = fresh_dir("resume_advise");
     const std::vector<std::string> advise = {"advise", "--inertia", "1.25e-5,2.25e-5,2.6e-5", "--mass", "0.1", "--stiffness", "1e6",
-                                             "--tolerance", "1e-3", "--schemes", "fincham,direct,zvw", "--jobs", "2"};
+                                             "--tolerance", "1e-3", "--schemes", "fincham,direct", "--jobs", "2"};
     std::vector<std::string> whole = advise;
     whole.insert(whole.end(), {"--out", (dir / "whole").string()});
     REQUIRE(cli(whole).status == 0);
     const fs::path out = dir / "cut";
-    REQUIRE(interrupted_run(out, SIGINT, 4, advise) == 128 + SIGINT);
+    REQUIRE(interrupted_run(out, SIGINT, 3, advise) == 128 + SIGINT);
     const Cli resumed = cli({"run", "--resume", out.string()});
     INFO(resumed.err);
     REQUIRE(resumed.status == 0);
@@ -161,7 +161,7 @@ TEST_CASE("an interrupted advise keeps its finished runs, and run --resume gives
         return found;
     };
     CHECK(dts(out / "advice.json") == dts(dir / "whole" / "advice.json"));
-    CHECK(dts(out / "advice.json").size() == 3);
+    CHECK(dts(out / "advice.json").size() == 2);
     CHECK_FALSE(fs::exists(out / "partial"));
     fs::remove_all(dir);
 }
