@@ -8,7 +8,8 @@ The body is six massless-looking marker atoms at +-a along its principal axes (t
 the centre of mass) whose mass, inertia tensor and angular momentum are given to LAMMPS through
 the fix's `infile`, so any principal moments in any order and any q0 are taken as they are. A
 dipole torque T = (R mu') x B is a pair of opposite charges on the body in a uniform field
-(fix efield), exact for a uniform field. Positions and velocities are dumped at every step with
+(fix efield), exact for a uniform field; a torque fixed in the body is three force couples on the
+marker pairs whose directions are read from the markers each step (fix addforce with variables). Positions and velocities are dumped at every step with
 17 significant digits; the orientation's columns are read from the marker pairs and the world
 angular velocity from their relative velocities: w = 1/2 sum_k c_k x u_k. Python 3 stdlib only;
 everything is written in the current directory (rotbench's scratch directory).
@@ -65,14 +66,29 @@ for k in range(3):
     atoms += [([A * c for c in axis], 0.0), ([-A * c for c in axis], 0.0)]
 torque = spec["torque"]
 field = [0.0, 0.0, 0.0]
-if torque["law"] == "dipole":
+couples = []  # (atom id, force variable names): a torque fixed in the body as couples on the marker pairs
+if torque["law"] == "body_constant":
+    # Pair j carries +-tau'_k / (2 A) c_l, with (j, l, k) cyclic: its torque 2 A c_j x f c_l is tau'_k c_k.
+    # c_l = (x[2l-1] - x[2l]) / (2 A) is read from the markers as LAMMPS moves them.
+    tau = torque["torque_body"]
+    for j, l, k in ((1, 2, 3), (2, 3, 1), (3, 1, 2)):
+        for sign, atom in ((1, 2 * j - 1), (-1, 2 * j)):
+            names = []
+            for axis in "xyz":
+                name = "f%d%s" % (atom, axis)
+                names.append(name)
+                couples.append("variable %s equal %s*(%s[%d]-%s[%d])" % (
+                    name, "%.17g" % (sign * tau[k - 1] / (4 * A * A)), axis, 2 * l - 1, axis, 2 * l))
+            couples.append("group a%d id %d" % (atom, atom))
+            couples.append("fix couple%d a%d addforce v_%s v_%s v_%s" % ((atom, atom) + tuple(names)))
+elif torque["law"] == "dipole":
     mu = matvec(R0, torque["dipole_body"])
     size = math.sqrt(sum(c * c for c in mu))
     if size > 0:  # +-q at +-A/2 along mu: q A = |mu|
         atoms += [([0.5 * A * c / size for c in mu], size / A), ([-0.5 * A * c / size for c in mu], -size / A)]
     field = torque["field_world"]
 elif torque["law"] != "none":
-    sys.exit("lammps_rigid.py: LAMMPS cannot take the torque law '%s' here" % torque["law"])
+    sys.exit("lammps_rigid.py: no LAMMPS fix here for the torque law '%s'" % torque["law"])
 
 g = lambda v: "%.17g" % v
 with open("body.rigid", "w") as f:
@@ -85,8 +101,11 @@ lines += ["create_atoms 1 single %s %s %s" % tuple(g(c) for c in x) for x, _ in 
 lines += ["set atom %d charge %s" % (n + 1, g(q)) for n, (_, q) in enumerate(atoms)]
 lines += ["set atom * mol 1", "pair_style zero 1.0", "pair_coeff * *", "neigh_modify exclude molecule/intra all",
           "comm_modify cutoff %s" % g(4 * A)]  # rigid/small wants the whole body within the ghost cutoff
+# Every force fix before the rigid fix: one defined after it is missing from the torque the rigid
+# fix sums at set-up, and the whole run is then first order (docs/clients.md).
 if any(field):
     lines.append("fix field all efield %s %s %s" % tuple(g(c) for c in field))
+lines += couples
 lines.append("fix body all %s %s infile body.rigid" % (style, bodystyle))
 lines += ["timestep %s" % g(spec["dt"]), "thermo 0",
           "dump d all custom 1 markers.dump id x y z vx vy vz",

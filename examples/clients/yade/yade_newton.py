@@ -19,7 +19,7 @@ import sys
 
 mode, spec_path, out_path = sys.argv[1], sys.argv[2], sys.argv[3]
 spec = json.load(open(spec_path))
-if spec["torque"]["law"] not in ("none", "dipole"):
+if spec["torque"]["law"] not in ("none", "body_constant", "dipole"):
     sys.exit("yade_newton.py: Yade cannot take the torque law '%s' here" % spec["torque"]["law"])
 
 script = r'''
@@ -36,6 +36,8 @@ def R(q):  # body -> world, from Yade's quaternion
 def torque(q):
     if law["law"] == "none":
         return Vector3(0, 0, 0)
+    if law["law"] == "body_constant":
+        return R(q) * Vector3(*law["torque_body"])
     return (R(q) * Vector3(*law["dipole_body"])).cross(Vector3(*law["field_world"]))
 
 
