@@ -9,7 +9,7 @@ cd "$(dirname "$0")"
 
 packages=(cmake ninja-build g++ libeigen3-dev libxsimd-dev catch2 libbenchmark-dev valgrind libboost-dev libgsl-dev libfmt-dev
           libcli11-dev libtomlplusplus-dev nlohmann-json3-dev gnuplot-nox python3  # python3: benchmarks/cost.py, clients
-          lammps yade)  # the real clients' gate (examples/clients, a slow test; yade is about 110 MB)
+          lammps yade liggghts)  # the real clients' gate (examples/clients, a slow test; yade is about 110 MB)
 
 missing=()
 for p in "${packages[@]}"; do

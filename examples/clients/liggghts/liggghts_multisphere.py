@@ -1,0 +1,84 @@
+#!/usr/bin/env python3
+"""rotbench client adapter for LIGGGHTS's `fix multisphere` (docs/clients.md).
+
+usage: liggghts_multisphere.py scene.json trajectory.csv
+
+The body is a multisphere template of six small spheres at +-a along its principal axes, given
+the scene's mass and its principal inertia tensor (`mass`, `inertia_tensor`, `use_density`: no
+Monte Carlo estimate), inserted once with `orientation constant q0` and `omega constant w0`.
+LIGGGHTS inserts it during step 1, so the dump of step k + 1 holds the state at t = k dt; the
+run makes N + 1 steps. Positions and velocities of the spheres are dumped with 17 significant
+digits, and the orientation's columns and the world angular velocity are read from the pairs, as
+for LAMMPS. Torques: none only. Python 3 stdlib only; everything stays in the current directory.
+"""
+import json
+import subprocess
+import sys
+
+spec_path, out_path = sys.argv[1], sys.argv[2]
+spec = json.load(open(spec_path))
+if spec["torque"]["law"] != "none":
+    sys.exit("liggghts_multisphere.py: the torque law '%s' is not taken" % spec["torque"]["law"])
+A, r = 1.0, 0.1  # marker distance and sphere radius (m): the spheres never touch
+g = lambda v: "%.17g" % v
+I = spec["inertia_body"]
+spheres = []
+for k in range(3):
+    for sign in (1, -1):
+        p = [0.0, 0.0, 0.0]
+        p[k] = sign * A
+        spheres += p + [r]
+lines = ["atom_style granular", "atom_modify map array", "boundary f f f", "newton off", "communicate single vel yes", "units si",
+         "region domain block -10 10 -10 10 -10 10 units box", "create_box 1 domain", "neighbor 0.1 bin", "neigh_modify delay 0",
+         "fix m1 all property/global youngsModulus peratomtype 1e7", "fix m2 all property/global poissonsRatio peratomtype 0.3",
+         "fix m3 all property/global coefficientRestitution peratomtypepair 1 0.5",
+         "fix m4 all property/global coefficientFriction peratomtypepair 1 0.5",
+         "pair_style gran model hertz tangential history", "pair_coeff * *", "timestep %s" % g(spec["dt"]),
+         "fix pts all particletemplate/multisphere 15485863 atom_type 1 density constant 1000 nspheres 6 ntry 100000 spheres %s "
+         "type 1 mass %s inertia_tensor %s 0 0 %s 0 %s use_density" % (" ".join(g(v) for v in spheres), g(spec["mass"]), g(I[0]), g(I[1]), g(I[2])),
+         "fix pdd all particledistribution/discrete 32452843 1 pts 1.0", "fix ms all multisphere",
+         "region ins block -1 1 -1 1 -1 1 units box",
+         "fix ins all insert/pack seed 32452867 distributiontemplate pdd insert_every once overlapcheck yes orientation constant %s "
+         "vel constant 0 0 0 omega constant %s particles_in_region 1 region ins" % (" ".join(g(v) for v in spec["q0"]), " ".join(g(v) for v in spec["omega0_world"])),
+         "dump d all custom 1 markers.dump id x y z vx vy vz",
+         'dump_modify d sort id format "%d %.17g %.17g %.17g %.17g %.17g %.17g"', "thermo 0", "run %d" % (spec["steps"] + 1)]
+open("in.rotbench", "w").write("\n".join(lines) + "\n")
+# Not `-screen none`: LIGGGHTS 3.8.0 dies of SIGSEGV with it; its screen output is discarded instead.
+subprocess.run(["liggghts", "-in", "in.rotbench", "-echo", "none", "-log", "none"], check=True, stdout=subprocess.DEVNULL)
+
+
+def cross(a, b):
+    return [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+
+
+def quat(m):  # rotation matrix -> unit quaternion, w first (Shepperd's method)
+    t = m[0][0] + m[1][1] + m[2][2]
+    if t > 0:
+        s = 2 * (1 + t) ** 0.5
+        return [s / 4, (m[2][1] - m[1][2]) / s, (m[0][2] - m[2][0]) / s, (m[1][0] - m[0][1]) / s]
+    i = max(range(3), key=lambda k: m[k][k])
+    j, k = (i + 1) % 3, (i + 2) % 3
+    s = 2 * (1 + m[i][i] - m[j][j] - m[k][k]) ** 0.5
+    q = [0.0] * 4
+    q[0] = (m[k][j] - m[j][k]) / s
+    q[1 + i] = s / 4
+    q[1 + j] = (m[j][i] + m[i][j]) / s
+    q[1 + k] = (m[k][i] + m[i][k]) / s
+    return q
+
+
+with open("markers.dump") as dump, open(out_path, "w") as out:
+    out.write(spec["columns"] + "\n")
+    step = None
+    for line in dump:
+        if line.startswith("ITEM: TIMESTEP"):
+            step = int(next(dump))
+        elif line.startswith("ITEM: NUMBER OF ATOMS"):
+            count = int(next(dump))
+        elif line.startswith("ITEM: ATOMS") and count == 6:
+            rows = [list(map(float, next(dump).split()[1:])) for _ in range(6)]
+            cols = [[(rows[2 * k][i] - rows[2 * k + 1][i]) / (2 * A) for i in range(3)] for k in range(3)]
+            rel = [[(rows[2 * k][3 + i] - rows[2 * k + 1][3 + i]) / (2 * A) for i in range(3)] for k in range(3)]
+            w = [0.5 * sum(cross(cols[k], rel[k])[i] for k in range(3)) for i in range(3)]
+            m = [[cols[j][i] for j in range(3)] for i in range(3)]
+            out.write(",".join(repr(v) for v in [(step - 1) * spec["dt"]] + quat(m) + w) + "\n")
