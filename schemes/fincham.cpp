@@ -1,5 +1,6 @@
-// `fincham`: Fincham's rotational leapfrog, Mol. Simul. 8:165 (1992); Yade's aspherical
-// integrator before SPIRAL (NewtonIntegrator::leapfrogAsphericalRotate).
+// `fincham`: Fincham's rotational leapfrog, Mol. Simul. 8:165 (1992), the rule Yade's aspherical
+// integrator cites (NewtonIntegrator::leapfrogAsphericalRotate; Yade 2023.02a, as shipped, reads
+// it at first order: docs/clients.md).
 //
 // Written in the synchronous (kick-drift-kick) form, which gives the same L and q as the
 // leapfrog one. The orientation is advanced by the explicit mid-point rule on
@@ -21,7 +22,7 @@ struct FinchamRotation : UnitResult {
 };
 
 const RegisterScheme<KickDriftKick<FinchamRotation>> registration(
-    "fincham", "Fincham's rotational leapfrog (Yade's former aspherical integrator)",
+    "fincham", "Fincham's rotational leapfrog (the rule Yade's aspherical integrator cites)",
     "Fincham, Mol. Simul. 8:165 (1992); Allen & Tildesley, Computer Simulation of Liquids, sec. 3.3",
     "Synchronous form of the leapfrog: kick of L with T^n, explicit mid-point rule on dq/dt = 1/2 w q (half step "
     "with w^n, full step with w^{n+1/2} from L^{n+1/2} at q^{n+1/2}), normalisation, kick with T^{n+1}.",

@@ -1,6 +1,7 @@
 // `no_squish`: the symplectic splitting of Miller, Eleftheriou, Pattnaik, Ndirango, Newns &
-// Martyna, J. Chem. Phys. 116:8649 (2002), as in LAMMPS (fix rigid/nve, fix nve/asphere),
-// HOOMD and LIGGGHTS.
+// Martyna, J. Chem. Phys. 116:8649 (2002), as in LAMMPS (fix rigid/nve, fix nve/asphere) and
+// HOOMD. LAMMPS's fix rigid/nve is this map when the principal moments come in descending order;
+// it labels the axes itself, and the order of the sub-steps depends on the labels (docs/clients.md).
 //
 // The free-rotor Hamiltonian is split by principal axis, H = sum_k L'_k^2 / (2 I_k), and
 // each piece is flowed exactly: under H_k the body turns about its own axis k by
@@ -50,7 +51,7 @@ struct NoSquishRotation {
 };
 
 const RegisterScheme<KickDriftKick<NoSquishRotation>> registration(
-    "no_squish", "NO_SQUISH symplectic splitting by principal axis (LAMMPS rigid/nve, HOOMD, LIGGGHTS)",
+    "no_squish", "NO_SQUISH symplectic splitting by principal axis (LAMMPS rigid/nve, HOOMD)",
     "Miller et al., J. Chem. Phys. 116:8649 (2002), eqs. 19-21",
     "Kick of L with T^n, exact rotations about the body axes 3, 2, 1, 2, 3 with steps dt/2, dt/2, dt, dt/2, dt/2, "
     "kick with T^{n+1}. Each axis rotation is written with the body angular momentum rather than Miller's quaternion "

@@ -1,5 +1,6 @@
 // `spiral`: SPIRAL, del Valle, Angelidakis, Roy, Munoz & Kozicki, Comput. Phys. Commun.
-// 297:109077 (2024); Yade's current default for aspherical bodies. Synchronous (non-leapfrog)
+// 297:109077 (2024); Yade's aspherical integrator after 2023.02a (which, as Debian ships it, still
+// has leapfrogAsphericalRotate: docs/clients.md). Synchronous (non-leapfrog)
 // form, as in the authors' JaxDEM code:
 //   q^{n+1} = q^n exp(dt/2 w'^n) exp(dt^2/4 dw'^n/dt)     (half-angle exponentials, body frame)
 //   w'^{n+1} = w'^n + (k1 + k2 + 4 k3)/6                  (SSPRK3 on Euler's equations)
@@ -36,7 +37,7 @@ struct Spiral {
 };
 
 const RegisterScheme<Spiral<>> registration(
-    "spiral", "SPIRAL: two exponential maps and SSPRK3 on Euler's equations (Yade's default)",
+    "spiral", "SPIRAL: two exponential maps and SSPRK3 on Euler's equations (Yade after 2023.02a)",
     "del Valle et al., Comput. Phys. Commun. 297:109077 (2024); synchronous form as in JaxDEM's Spiral",
     "q^{n+1} = q^n exp(dt/2 w'^n) exp(dt^2/4 dw'/dt) (half-angle exponentials, body frame), w' by SSPRK3; the "
     "torque is T^n throughout (one force evaluation, at the start of the step), so the corrector does nothing. "
