@@ -8,8 +8,10 @@ set -euo pipefail
 cd "$(dirname "$0")"
 
 packages=(cmake ninja-build g++ libeigen3-dev libxsimd-dev catch2 libbenchmark-dev valgrind libboost-dev libgsl-dev libfmt-dev
-          libcli11-dev libtomlplusplus-dev nlohmann-json3-dev gnuplot-nox python3  # python3: benchmarks/cost.py, clients
-          lammps yade liggghts)  # the real clients' gate (examples/clients, a slow test; yade is about 110 MB)
+          libcli11-dev libtomlplusplus-dev nlohmann-json3-dev gnuplot-nox python3)  # python3: benchmarks/cost.py, clients
+# The DEM codes the clients' gate runs (examples/clients, a slow test): only for the tests (yade is
+# about 110 MB to fetch).
+[ "${1:-build}" = test ] && packages+=(lammps yade liggghts)
 
 missing=()
 for p in "${packages[@]}"; do
