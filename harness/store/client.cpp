@@ -3,6 +3,7 @@
 #include "harness/core/fnv1a.hpp"
 #include "harness/scenes/scene.hpp"
 #include "harness/store/output_files.hpp"
+#include "harness/store/plugin.hpp"
 #include "harness/store/toml_input.hpp"
 #include "schemes/scheme.hpp"
 
@@ -130,7 +131,8 @@ std::string load_client(const std::string& path) {
         else if (key == "unsound_reason") notes = text(path, key, v);
         else if (key == "counterpart") {
             client.counterpart = text(path, key, v);
-            if (!SchemeRegistry::instance().contains(client.counterpart) || client_of(client.counterpart))
+            // Built-in only: the counterpart runs in this process, beside the client's replay.
+            if (!SchemeRegistry::instance().contains(client.counterpart) || client_of(client.counterpart) || plugin_of(client.counterpart))
                 toml_error(path, v, "counterpart '" + client.counterpart + "' is not a built-in scheme");
         } else if (key == "counterpart_note") {
             client.counterpart_note = text(path, key, v);
