@@ -8,6 +8,7 @@
 #include "harness/store/output_dir.hpp"
 #include "harness/store/output_files.hpp"
 #include "harness/store/parse.hpp"
+#include "harness/store/series_csv.hpp"
 #include "schemes/scheme.hpp"
 
 #include <filesystem>
@@ -54,12 +55,7 @@ struct ExportOptions {
         check_output_file(out, "--out", overwrite, trajectory_header);
     }
     void write(const std::vector<std::vector<double>>& rows, std::ostream& log) const {
-        std::string csv = std::string(trajectory_header) + "\n";
-        for (const auto& row : rows) {
-            for (std::size_t k = 0; k < row.size(); ++k) csv += (k ? "," : "") + format_number(row[k]);
-            csv += "\n";
-        }
-        write_file_atomically(out, csv);
+        write_file_atomically(out, table_csv(split_commas(trajectory_header), rows));
         log << "wrote " << out << "\n";
     }
 };

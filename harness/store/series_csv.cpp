@@ -19,6 +19,8 @@ std::string run_tag(const RunSpec& spec) {
     return tag;
 }
 
+}  // namespace
+
 std::string table_csv(const std::vector<std::string>& columns, const std::vector<std::vector<double>>& rows) {
     std::string csv;
     for (std::size_t c = 0; c < columns.size(); ++c) csv += (c ? "," : "") + columns[c];
@@ -29,8 +31,6 @@ std::string table_csv(const std::vector<std::string>& columns, const std::vector
     }
     return csv;
 }
-
-}  // namespace
 
 std::string series_file_name(const RunSpec& spec, bool energy) { return fmt::format("{}_{}.csv", energy ? "energy" : "curve", run_tag(spec)); }
 std::string series_file_name(const RunResult& r) { return series_file_name(r.spec, r.has_energy_series()); }

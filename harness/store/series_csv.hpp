@@ -13,6 +13,9 @@
 
 namespace rotbench {
 
+// A header of `columns`, then one line per row, every number in its shortest round-trip form.
+std::string table_csv(const std::vector<std::string>& columns, const std::vector<std::vector<double>>& rows);
+
 // dt as it appears in file names ("{:g}").
 std::string dt_tag(double dt);
 // A run's series file: its name (under series/) and its text.
