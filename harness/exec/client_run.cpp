@@ -139,16 +139,14 @@ RunResult run_client(const RunSpec& requested, const RunOptions& options, const 
     };
     if (requested.kind != RunKind::trajectory && requested.kind != RunKind::horizon)
         return fail(fmt::format("a client makes runs of kind trajectory and horizon, not {}", kind_name(requested.kind)));
-    if (std::find(client.scenes.begin(), client.scenes.end(), requested.scene) == client.scenes.end())
-        return fail(fmt::format("client {} does not take scene {} (its client file lists {})", client.id, requested.scene,
-                                join(client.scenes, ", ")));
+    if (const std::string why = why_not_taken(requested.scheme, requested.scene); !why.empty()) return fail(why);
     const double t_end = requested.kind == RunKind::horizon ? energy_horizon * scene->t_end() : scene->t_end();
     const std::int64_t steps = step_count(t_end, requested.dt);
     const Scratch scratch;
     write_file_atomically(scratch.path / "scene.json", client_scene_json(*scene, requested, t_end, steps));
     std::vector<std::string> args = client.program;
     args.insert(args.end(), {"scene.json", "trajectory.csv"});
-    const double seconds = limits.seconds > 0 ? limits.seconds : 60.0 + 10.0 * 1e-5 * static_cast<double>(steps);
+    const double seconds = limits.seconds > 0 ? limits.seconds : steps_timeout(static_cast<double>(steps));
     const WorkerOutput out = run_program(args, scratch.path.string(), seconds, limits.megabytes ? limits.megabytes : isolation_memory(1), "program");
     if (out.interrupted) return RunResult{failed.spec, {}, {}, true};
     if (!out.failure.empty()) return fail(out.failure);

@@ -30,13 +30,13 @@ std::string& worker() {
     return path;
 }
 
-// The default time limit: ten times what a slow plug-in (10 us per body-step) would take, and
-// a minute more; ten minutes for a stability search, an amplification limit or a spectral curve.
+// Ten minutes for a stability search, an amplification limit or a spectral curve; otherwise
+// the time limit of its body-steps (each way of a reversal, both stretches of a horizon run).
 double default_timeout(const RunSpec& spec, const Scene& scene) {
     if (spec.kind == RunKind::stability || spec.kind == RunKind::amplification || spec.kind == RunKind::spectral) return 600.0;
     const double body_steps = static_cast<double>(step_count(scene.t_end(), spec.dt)) * static_cast<double>(scene.initial_state().size());
     const double ways = spec.kind == RunKind::reversal ? 2.0 : spec.kind == RunKind::horizon ? 1.0 + energy_horizon : 1.0;
-    return 60.0 + 10.0 * 1e-5 * body_steps * ways;
+    return steps_timeout(body_steps * ways);
 }
 
 // A run's record is a few kB (its energy series included); a worker that writes more is broken.
@@ -56,6 +56,8 @@ bool drain(int fd, std::string& into, std::size_t keep) {
 }
 
 }  // namespace
+
+double steps_timeout(double body_steps) { return 60.0 + 10.0 * 1e-5 * body_steps; }
 
 void set_worker_executable(std::string path) { worker() = std::move(path); }
 const std::string& worker_executable() { return worker(); }

@@ -26,6 +26,10 @@ const std::string& worker_executable();
 // Whether a scheme's runs go to a child process: it comes from a plug-in, and there is a worker.
 bool isolated(const std::string& scheme);
 
+// The default time limit of `body_steps` steps of a body: ten times what a slow plug-in (10 us per
+// body-step) would take, and a minute more.
+double steps_timeout(double body_steps);
+
 // The default memory limit: half of the machine's memory over `jobs`, at least 1 GB. (The
 // default time limit is derived from the run: IsolationLimits.)
 std::size_t isolation_memory(int jobs);
