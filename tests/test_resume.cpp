@@ -3,6 +3,7 @@
 #include "harness/exec/executor.hpp"
 #include "harness/store/journal.hpp"
 #include "harness/store/output_dir.hpp"
+#include "harness/store/output_files.hpp"
 #include "harness/store/run_record.hpp"
 #include "tests/cli_helpers.hpp"
 
@@ -200,6 +201,19 @@ TEST_CASE("a journal record cut short by a kill counts as not finished and is cu
     REQUIRE(runs.size() == 2);
     CHECK(runs.at(b.spec).value("omega_rms_x") == b.value("omega_rms_x"));
     CHECK(read(dir / "partial" / "runs.jsonl").find(R"({"index":1,)") != std::string::npos);  // the records are counted on
+    fs::remove_all(dir);
+}
+
+TEST_CASE("a journal larger than any input file is read whole: no cap of its own loses a finished sweep") {
+    const fs::path dir = fresh_dir("journal_big");
+    const RunResult a = run_one({"asymmetric_free", "zvw", 1e-2, 0.1}, {.measure_time = false});
+    Journal::start(OutputDir::open(dir, {"run", "results.csv", {}}), {"run"}).record(a);
+    const fs::path runs = dir / "partial" / "runs.jsonl";
+    const auto whole = fs::file_size(runs);
+    fs::resize_file(runs, max_input_bytes + (1u << 20));  // a cut record past the cap (sparse: no disk)
+    const Journal resumed = Journal::reopen(OutputDir::open(dir, {"run", "results.csv", {}, false, true}));
+    CHECK(fs::file_size(runs) == whole);
+    CHECK(resumed.finished().size() == 1);
     fs::remove_all(dir);
 }
 

@@ -29,6 +29,7 @@ public:
         command.add_flag("--overwrite", overwrite_, "replace an advice.json rotbench wrote there");
         command.add_option("--jobs", jobs_, "schemes in parallel")->check(CLI::Range(1, max_jobs));
     }
+    bool resumable() const override { return true; }
     int run(const Invocation& how) override {
         Particle p;
         const auto moments = split_commas(inertia_);

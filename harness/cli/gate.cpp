@@ -55,6 +55,7 @@ public:
         command.add_flag("--overwrite", overwrite_, "replace the gate's earlier outputs (in --out, and --junit and --summary files)");
     }
 
+    bool resumable() const override { return true; }
     int run(const Invocation& how) override {
         GateFile file = load_gate(file_);
         if (!schemes_.empty()) file = only_schemes(std::move(file), parse_id_list(schemes_, SchemeRegistry::instance(), "scheme"));

@@ -119,6 +119,7 @@ public:
         add_run_options(command, options_);
     }
     bool defers_plugins() const override { return !options_.resume.empty(); }
+    bool resumable() const override { return true; }
     int run(const Invocation& how) override {
         if (!options_.resume.empty()) {
             if (how.resuming)

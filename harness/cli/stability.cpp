@@ -31,6 +31,7 @@ public:
         command.add_flag("--quiet", quiet_, "no progress on stderr");
         isolation_.add_to(command, "600 s for a search");
     }
+    bool resumable() const override { return true; }
     int run(const Invocation& how) override {
         const auto scenes = parse_id_list(scenes_, SceneRegistry::instance(), "scene");
         const auto schemes = schemes_.empty() ? SchemeRegistry::instance().ids()

@@ -34,6 +34,9 @@ public:
     // True when this invocation loads the plug-ins itself, later (run --resume: they are
     // among the interrupted run's own arguments). Otherwise they are loaded before run().
     virtual bool defers_plugins() const { return false; }
+    // True for a verb that journals its runs, and so may be finished by `run --resume`: no
+    // other verb is ever run from the arguments an output folder holds.
+    virtual bool resumable() const { return false; }
 };
 
 using VerbRegistry = Registry<Verb>;

@@ -38,8 +38,9 @@ struct Records {
 
 Records read_records(const fs::path& file) {
     Records found;
-    const std::string text = fs::exists(file) ? read_input_file(file, "the journal") : "";
-    RunRecords records = parse_run_records(text, file.string());
+    if (!fs::exists(file)) return found;
+    std::ifstream in = open_input_stream(file, "the journal");
+    RunRecords records = parse_run_records(in, file.string());
     for (auto& [index, run] : records.runs) {
         const RunSpec key = run.spec;
         if (!found.runs.emplace(key, std::move(run)).second)

@@ -9,7 +9,9 @@
 #include <cstring>
 #include <fcntl.h>
 #include <fmt/format.h>
+#include <stdexcept>
 #include <sys/file.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 namespace rotbench {
@@ -22,8 +24,31 @@ constexpr const char* manifest_header = "rotbench manifest 1\n";
 
 fs::path manifest_path(const fs::path& dir) { return dir / meta / "manifest"; }
 
+// A name rotbench may write under an output folder: relative, below it, outside its
+// bookkeeping. A manifest is input (the folder may come from someone else): it is held to this.
+bool own_name(const std::string& relative) {
+    const fs::path path(relative);
+    if (relative.empty() || path.is_absolute() || *path.begin() == meta) return false;
+    for (const auto& part : path)
+        if (part.empty() || part == "." || part == "..") return false;
+    return std::none_of(relative.begin(), relative.end(), [](unsigned char c) { return c < 0x20 || c == 0x7f; });
+}
+
+// Nothing is written, read back or removed through a symbolic link inside an output folder:
+// one planted there (or in a folder received from someone else) would lead outside it.
+void refuse_links(const fs::path& dir, const fs::path& relative) {
+    fs::path at = dir;
+    for (const auto& part : relative) {
+        at /= part;
+        std::error_code ec;
+        if (fs::symlink_status(at, ec).type() == fs::file_type::symlink)
+            throw InputError("--out " + dir.string() + ": " + at.string() + " is a symbolic link; rotbench writes nothing through a link in its folder");
+    }
+}
+
 std::vector<std::pair<std::string, std::string>> read_manifest(const fs::path& dir) {
     std::vector<std::pair<std::string, std::string>> entries;
+    refuse_links(dir, fs::path(meta) / "manifest");
     const auto text = read_file(manifest_path(dir));
     if (!text) return entries;
     if (text->rfind(manifest_header, 0) != 0) throw InputError((manifest_path(dir)).string() + ": not a rotbench manifest");
@@ -31,6 +56,9 @@ std::vector<std::pair<std::string, std::string>> read_manifest(const fs::path& d
         if (line.empty()) continue;
         const auto tab = line.find('\t');
         if (tab == std::string::npos) throw InputError(manifest_path(dir).string() + ": a line without its family");
+        if (!own_name(line.substr(tab + 1)))
+            throw InputError(manifest_path(dir).string() + ": lists '" + line.substr(tab + 1) +
+                             "', which is not a name rotbench writes in its folder; the folder's bookkeeping was changed by something else");
         entries.push_back({line.substr(0, tab), line.substr(tab + 1)});
     }
     return entries;
@@ -61,6 +89,11 @@ OutputDir OutputDir::open(const fs::path& dir, const Request& r) {
     std::error_code ec;
     if (fs::exists(dir, ec) && !fs::is_directory(dir, ec)) throw InputError("--out " + name + ": cannot create the directory (a file is there)");
     const bool existed = fs::exists(dir, ec);
+    if (existed) {
+        refuse_links(dir, fs::path(meta) / "lock");
+        for (const char* sub : subfolders) refuse_links(dir, sub);
+        refuse_links(dir, "partial/command");
+    }
     const bool fresh = !existed || empty_directory(dir);
     const bool ours = fs::exists(manifest_path(dir), ec);
     if (!fresh && !ours && !r.overwrite)
@@ -104,7 +137,12 @@ OutputDir OutputDir::open(const fs::path& dir, const Request& r) {
     auto state = std::make_shared<State>();
     state->dir = dir;
     state->family = r.family;
-    state->lock_fd = ::open((dir / meta / "lock").c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+    state->lock_fd = ::open((dir / meta / "lock").c_str(), O_RDWR | O_CREAT | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC, 0644);
+    struct stat lock_stat {};
+    if (state->lock_fd >= 0 && (::fstat(state->lock_fd, &lock_stat) != 0 || !S_ISREG(lock_stat.st_mode))) {
+        undo();
+        throw InputError("--out " + name + ": " + (dir / meta / "lock").string() + " is not a regular file; the folder's bookkeeping was changed by something else");
+    }
     if (state->lock_fd < 0) {
         undo();
         throw InputError("--out " + name + ": the directory is not writable");
@@ -123,7 +161,10 @@ OutputDir OutputDir::open(const fs::path& dir, const Request& r) {
     if (r.overwrite && !r.resuming) {
         std::vector<std::pair<std::string, std::string>> kept;
         for (const auto& entry : manifest) {
-            if (entry.first == r.family) fs::remove(dir / entry.second, ec);
+            if (entry.first == r.family) {
+                refuse_links(dir, fs::path(entry.second).parent_path());
+                fs::remove(dir / entry.second, ec);  // the name itself, were it a link: never what it points to
+            }
             else kept.push_back(entry);
         }
         manifest = std::move(kept);
@@ -139,6 +180,8 @@ OutputDir OutputDir::open(const fs::path& dir, const Request& r) {
 }
 
 void OutputDir::check(const std::string& relative) const {
+    if (!own_name(relative)) throw std::logic_error("not an output name: " + relative);
+    refuse_links(state_->dir, relative);
     std::error_code ec;
     const fs::path file = state_->dir / relative;
     if (!fs::exists(file, ec)) return;

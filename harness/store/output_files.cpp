@@ -2,13 +2,14 @@
 
 #include "schemes/registry.hpp"
 
-#include <atomic>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cstdint>
 #include <cstring>
 #include <fcntl.h>
 #include <fmt/format.h>
+#include <random>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -30,12 +31,17 @@ int write_all(int fd, const std::string& content) {
 }  // namespace
 
 void write_file_atomically(const std::filesystem::path& path, const std::string& content) {
-    // The temporary name is unique to the process and the call: two processes or threads
-    // writing the same file (a shared cache) each rename a complete file.
-    static std::atomic<unsigned long> serial{0};
-    const auto temporary =
-        path.parent_path() / fmt::format(".{}.{}.{}.tmp", path.filename().string(), ::getpid(), serial++);
-    const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+    // The temporary is made new (O_EXCL, never through a link) under a name nobody can guess
+    // ahead: in a shared folder (ROTBENCH_CACHE) another user cannot plant a link or a file
+    // there for rotbench to write through, and two writers each rename a complete file.
+    thread_local std::mt19937_64 random{std::random_device{}() ^ static_cast<std::uint64_t>(::getpid())};
+    std::filesystem::path temporary;
+    int fd = -1;
+    for (int attempt = 0; fd < 0 && attempt < 16; ++attempt) {
+        temporary = path.parent_path() / fmt::format(".{}.{:016x}.tmp", path.filename().string(), random());
+        fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0644);
+        if (fd < 0 && errno != EEXIST) break;
+    }
     if (fd < 0) throw OutputError(fmt::format("cannot write {}: {}", path.string(), std::strerror(errno)));
     int error = write_all(fd, content);
     if (::close(fd) != 0 && error == 0) error = errno;
@@ -47,7 +53,7 @@ void write_file_atomically(const std::filesystem::path& path, const std::string&
 }
 
 void append_to_file(const std::filesystem::path& path, const std::string& content) {
-    const int fd = ::open(path.c_str(), O_WRONLY | O_APPEND | O_CREAT | O_CLOEXEC, 0644);
+    const int fd = ::open(path.c_str(), O_WRONLY | O_APPEND | O_CREAT | O_NOFOLLOW | O_CLOEXEC, 0644);
     if (fd < 0) throw OutputError(fmt::format("cannot write {}: {}", path.string(), std::strerror(errno)));
     int error = write_all(fd, content);
     if (::close(fd) != 0 && error == 0) error = errno;
@@ -106,6 +112,18 @@ std::string read_input_file(const std::filesystem::path& path, const std::string
     }
     ::close(fd);
     return text;
+}
+
+std::ifstream open_input_stream(const std::filesystem::path& path, const std::string& what) {
+    const std::string where = what.empty() ? path.string() : what + " " + path.string();
+    std::error_code ec;
+    const auto status = std::filesystem::status(path, ec);
+    if (ec) throw InputError(fmt::format("{}: cannot read the file ({})", where, ec.message()));
+    if (!std::filesystem::is_regular_file(status))  // a FIFO would block the open
+        throw InputError(where + ": not a regular file" + (std::filesystem::is_directory(status) ? " (a directory)" : ""));
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw InputError(fmt::format("{}: cannot read the file ({})", where, std::strerror(errno)));
+    return in;
 }
 
 std::string format_number(double value) {

@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <fstream>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -32,6 +33,10 @@ std::optional<std::string> read_file(const std::filesystem::path& path);
 // at most `max_bytes`, naming `what` (the option or role) and the path.
 inline constexpr std::size_t max_input_bytes = 256u << 20;  // 256 MiB: twice a default suite's CSVs, many times over
 std::string read_input_file(const std::filesystem::path& path, const std::string& what, std::size_t max_bytes = max_input_bytes);
+
+// An input file of any size, to be read as a stream (the run store, the journal): InputError
+// as above unless it is a regular file that opens.
+std::ifstream open_input_stream(const std::filesystem::path& path, const std::string& what);
 
 // A number in the shortest form that reads back to the same double; "nan", "inf", "-inf".
 std::string format_number(double value);

@@ -9,6 +9,7 @@
 #include <cctype>
 #include <cmath>
 #include <fmt/format.h>
+#include <sstream>
 
 namespace rotbench {
 
@@ -75,9 +76,12 @@ void write_run_files(const OutputDir& dir, const std::vector<RunResult>& runs) {
     dir.write("runs.csv", runs_csv(runs));
 }
 
-std::vector<RunResult> parse_run_store(const std::string& text, const std::string& name) {
-    RunRecords records = parse_run_records(text, name);
-    if (records.whole_length != text.size())
+namespace {
+
+// `size`: the bytes of the store, which its whole records must span.
+std::vector<RunResult> parse_run_store(std::istream& in, std::size_t size, const std::string& name) {
+    RunRecords records = parse_run_records(in, name);
+    if (records.whole_length != size)
         throw InputError(fmt::format("{}: cut short or not a run store after {} runs", name, records.runs.size()));
     if (records.runs.empty()) throw InputError(name + ": no run in the store");
     std::vector<RunResult> runs;
@@ -90,9 +94,17 @@ std::vector<RunResult> parse_run_store(const std::string& text, const std::strin
     return runs;
 }
 
+}  // namespace
+
+std::vector<RunResult> parse_run_store(const std::string& text, const std::string& name) {
+    std::istringstream in(text);
+    return parse_run_store(in, text.size(), name);
+}
+
 std::vector<RunResult> read_results(const std::filesystem::path& dir) {
     const std::filesystem::path store = dir / "runs.jsonl";
-    return parse_run_store(read_input_file(store, "cannot read"), store.string());
+    std::ifstream in = open_input_stream(store, "cannot read");
+    return parse_run_store(in, std::filesystem::file_size(store), store.string());
 }
 
 }  // namespace rotbench

@@ -1,6 +1,7 @@
 #include "harness/store/run_record.hpp"
 
 #include <cmath>
+#include <sstream>
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
@@ -97,13 +98,12 @@ std::string run_record(std::size_t index, const RunResult& result) {
     return json{{"index", index}, {"run", run_json(result)}}.dump(-1, ' ', false, json::error_handler_t::replace) + "\n";
 }
 
-RunRecords parse_run_records(const std::string& text, const std::string& name) {
+RunRecords parse_run_records(std::istream& in, const std::string& name) {
     RunRecords found;
-    for (std::size_t at = 0; at < text.size();) {
-        const std::size_t end = text.find('\n', at);
-        if (end == std::string::npos) break;  // cut short
-        const json j =
-            json::parse(text.begin() + static_cast<std::ptrdiff_t>(at), text.begin() + static_cast<std::ptrdiff_t>(end), nullptr, false);
+    std::string line;
+    while (std::getline(in, line)) {
+        if (in.eof()) break;  // no line break after it: cut short
+        const json j = json::parse(line, nullptr, false);
         if (j.is_discarded() || !is_record(j)) break;
         try {
             found.runs.emplace_back(j.at("index").get<std::size_t>(), run_of(j.at("run")));
@@ -112,10 +112,14 @@ RunRecords parse_run_records(const std::string& text, const std::string& name) {
         } catch (const InputError& e) {
             throw InputError(fmt::format("{}: the record of run {} is malformed: {}", name, j.at("index").get<std::size_t>(), e.what()));
         }
-        at = end + 1;
-        found.whole_length = at;
+        found.whole_length += line.size() + 1;
     }
     return found;
+}
+
+RunRecords parse_run_records(const std::string& text, const std::string& name) {
+    std::istringstream in(text);
+    return parse_run_records(in, name);
 }
 
 std::string spec_record(const RunSpec& spec) { return spec_json(spec).dump(); }

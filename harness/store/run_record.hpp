@@ -11,6 +11,7 @@
 #include "harness/core/run.hpp"
 
 #include <cstddef>
+#include <istream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -25,10 +26,11 @@ struct RunRecords {
     std::size_t whole_length = 0;                         // the bytes the whole records span
 };
 
-// The whole records at the start of `text`; reading stops at the first line that is cut (no
-// line break: a kill while it was written) or is not a record. A line that is JSON of the
-// record's shape but holds a wrong value (an unknown kind, a metric that is not a number) is
-// an InputError naming `name`.
+// The whole records at the start of `in`, read line by line (a store or journal of any size);
+// reading stops at the first line that is cut (no line break: a kill while it was written) or
+// is not a record. A line that is JSON of the record's shape but holds a wrong value (an
+// unknown kind, a metric that is not a number) is an InputError naming `name`.
+RunRecords parse_run_records(std::istream& in, const std::string& name);
 RunRecords parse_run_records(const std::string& text, const std::string& name);
 
 // A run's spec alone, as one line without a line break (the worker's --spec), and back.
