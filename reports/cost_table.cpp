@@ -1,6 +1,7 @@
 #include "reports/cost_table.hpp"
 
 #include "harness/store/output_files.hpp"
+#include "harness/store/parse.hpp"
 #include "reports/escape.hpp"
 
 #include <algorithm>
@@ -8,6 +9,7 @@
 #include <fmt/format.h>
 #include <map>
 #include <optional>
+#include <set>
 #include <sstream>
 #include <vector>
 
@@ -32,11 +34,18 @@ std::optional<std::vector<Row>> read_rows(const std::filesystem::path& dir) {
     std::getline(in, line);
     const auto header = split(line);
     std::vector<Row> rows;
-    while (std::getline(in, line)) {
+    // A hand-edited table is input: a field that should be a number and is not is refused
+    // here, with its line and column, not met later by the formatting.
+    const std::set<std::string> text_columns = {"scheme", "public", "mode", "failure"};
+    for (int number = 2; std::getline(in, line); ++number) {
         if (line.empty()) continue;
         const auto cells = split(line);
         Row row;
-        for (std::size_t i = 0; i < header.size() && i < cells.size(); ++i) row[header[i]] = cells[i];
+        for (std::size_t i = 0; i < header.size() && i < cells.size(); ++i) {
+            if (!text_columns.count(header[i]) && !cells[i].empty())
+                parse_finite(cells[i], fmt::format("{}:{}: column {}", (dir / "cost.csv").string(), number, header[i]));
+            row[header[i]] = cells[i];
+        }
         rows.push_back(std::move(row));
     }
     return rows;

@@ -81,6 +81,41 @@ TEST_CASE("compare: a run newly unstable fails") {
     CHECK_THAT(v.message, Catch::Contains("unstable now (blew up at step 3"));
 }
 
+TEST_CASE("compare: a run or an ensemble that fails now is a regression, never a pass for want of errors") {
+    const auto base = ladder("direct");
+    SECTION("a run that fails without being unstable") {
+        auto now = base;
+        now[1].metrics.clear();
+        now[1].failure = "its worker was killed by signal 9";
+        const Verdict v = find(compare_runs(base, now, {}, "base"), "baseline_stability");
+        CHECK_FALSE(v.passed);
+        CHECK_THAT(v.message, Catch::Contains("the run at dt = 0.01 fails now (its worker was killed by signal 9)"));
+    }
+    SECTION("an ensemble with more failed members, every one of them at the worst") {
+        auto with_members = [](std::vector<RunResult> runs, double failed) {
+            for (auto& r : runs) r.metrics.emplace_back(metric::ensemble_failed, failed);
+            return runs;
+        };
+        const auto before = with_members(base, 0);
+        auto now = with_members(base, 3);
+        for (auto& r : now) r.failure = "blew up at step 3 (t = 0.06 s)";
+        const Verdict v = find(compare_runs(before, now, {}, "base"), "baseline_stability");
+        CHECK_FALSE(v.passed);
+        CHECK_THAT(v.message, Catch::Contains("fails now, 3 of its members against 0"));
+        CHECK(find(compare_runs(now, now, {}, "base"), "baseline_stability").passed);  // failing as before: no change
+    }
+}
+
+TEST_CASE("compare: comparing nothing fails") {
+    const auto base = ladder("direct"), now = ladder("zvw");
+    const Comparison c = compare_runs(base, now, {}, "base");
+    const Verdict v = find(c, "baseline_matched");
+    CHECK_FALSE(v.passed);
+    CHECK_THAT(v.message, Catch::Contains("no run of the new results is in the baseline (4 new, 4 in the baseline): nothing was compared"));
+    const Comparison same = compare_runs(base, base, {}, "base");
+    CHECK_FALSE(std::any_of(same.verdicts.begin(), same.verdicts.end(), [](const Verdict& x) { return x.of.id == "baseline_matched"; }));
+}
+
 TEST_CASE("compare: a cost regression counts only when it is large and significant against the timing repeats") {
     std::mt19937_64 rng(7);
     std::normal_distribution<double> noise(1.0, 0.02);

@@ -1,6 +1,7 @@
 // The report's cost section, from a cost.csv as benchmarks/cost.py writes it.
 #include "reports/cost_table.hpp"
 #include "harness/store/output_files.hpp"
+#include "schemes/registry.hpp"
 
 #include <algorithm>
 #include <catch2/catch.hpp>
@@ -65,5 +66,14 @@ TEST_CASE("the cost section shows for every scheme its times and instructions an
 TEST_CASE("without cost.csv the report says how to measure it") {
     const auto dir = fresh_dir("rotbench_cost_absent");
     CHECK(cost_section(dir).find("`benchmarks/cost.py BUILD ") != std::string::npos);
+    std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("a hand-edited cost.csv with a field that is not a number is bad input naming the file, line and column") {
+    const auto dir = fresh_dir("rotbench_cost_edited");
+    std::string edited = cost_csv;
+    edited.replace(edited.find("zvw,1000000,40,"), 15, "zvw,1000000,4O,");
+    write_file_atomically(dir / "cost.csv", edited);
+    CHECK_THROWS_MATCHES(cost_section(dir), InputError, Catch::Message((dir / "cost.csv").string() + ":6: column ns_batched: '4O' is not a number"));
     std::filesystem::remove_all(dir);
 }

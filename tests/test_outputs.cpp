@@ -156,3 +156,19 @@ TEST_CASE("outputs: without gnuplot the report says it is not installed, and a f
     CHECK_FALSE(fs::exists(dir / "b" / "plots" / "convergence_dipole_top.svg"));  // no empty or partial SVG
     fs::remove_all(dir);
 }
+
+TEST_CASE("outputs: two outputs of one command on one file are refused before any work") {
+    const fs::path dir = fresh_dir("outputs_one_file");
+    fs::create_directories(dir);
+    const std::string gate = (fs::path(ROTBENCH_SOURCE_DIR) / "gates" / "default.toml").string();
+    const std::string junit = (dir / "r.xml").string(), same = (dir / "." / "r.xml").string();
+    const Cli both = cli({"gate", gate, "--schemes", "direct", "--junit", junit, "--summary", same});
+    CHECK(both.status == 2);
+    CHECK(one_line(both.err));
+    CHECK_THAT(both.err, Catch::Contains("--summary and --junit name one file"));
+    const Cli beside = cli({"gate", gate, "--schemes", "direct", "--junit", junit, "--summary", (dir / "summary.json").string()});
+    CHECK(beside.status == 2);
+    CHECK_THAT(beside.err, Catch::Contains("--summary and --junit (summary.json beside it) name one file"));
+    CHECK(fs::is_empty(dir));
+    fs::remove_all(dir);
+}

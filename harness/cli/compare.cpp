@@ -33,6 +33,10 @@ public:
         options.order_tolerance = parse_positive(order_, "--order-tolerance");
         options.cost_tolerance = parse_positive(cost_, "--cost-tolerance");
         const auto base = read_results(base_), now = read_results(now_);
+        check_distinct_outputs({{"--junit", junit_},
+                                {"--summary", summary_},
+                                {"--out (its summary.json)", out_.empty() ? std::filesystem::path() : std::filesystem::path(out_) / "summary.json"},
+                                {"--out (its compare.csv)", out_.empty() ? std::filesystem::path() : std::filesystem::path(out_) / "compare.csv"}});
         if (!junit_.empty()) check_output_file(junit_, "--junit", overwrite_, junit_signature);
         if (!summary_.empty()) check_output_file(summary_, "--summary", overwrite_, markdown_signature);
         std::optional<OutputDir> dir;

@@ -64,6 +64,11 @@ public:
         if (slice.shard && out_.empty()) throw InputError("--shard needs --out: a slice's runs are only worth their files");
         if (slice.shard && !results_.empty()) throw InputError("--results judges runs already made: no --shard with it");
         // Every output is checked before the first run: a file in the way fails now, not after the work.
+        // (--junit's summary.json may be --out's: the same summary, written twice.)
+        const fs::path junit_json = junit_.empty() ? fs::path() : fs::path(junit_).parent_path() / "summary.json";
+        const fs::path out_json = out_.empty() ? fs::path() : fs::path(out_) / "summary.json";
+        check_distinct_outputs({{"--junit", junit_}, {"--junit (summary.json beside it)", junit_json}, {"--summary", summary_}});
+        check_distinct_outputs({{"--junit", junit_}, {"--summary", summary_}, {"--out (its summary.json)", out_json}});
         if (!junit_.empty()) {
             check_output_file(junit_, "--junit", overwrite_, junit_signature);
             check_output_file(fs::path(junit_).parent_path() / "summary.json", "--junit (summary.json beside it)", overwrite_,

@@ -1,6 +1,8 @@
 // Runs work(i) for i = 0 .. count-1 on `jobs` threads (the caller's among them). Each index
 // runs once; an exception does not stop the other indices, and the first one is rethrown
-// after all have finished, on the calling thread.
+// after all have finished, on the calling thread. When the system will not make as many
+// threads (an address-space or process limit, as batch systems set), the work runs on those
+// it made, the caller's at least, and a line on stderr says so.
 #pragma once
 
 #include "harness/exec/machine.hpp"
@@ -8,8 +10,10 @@
 #include <algorithm>
 #include <atomic>
 #include <cstddef>
+#include <cstdio>
 #include <exception>
 #include <mutex>
+#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -31,7 +35,12 @@ void parallel_for(std::size_t count, int jobs, Work&& work) {
         }
     };
     std::vector<std::thread> threads;
-    for (int j = 1; j < std::max(1, jobs); ++j) threads.emplace_back(worker);
+    try {
+        for (int j = 1; j < std::max(1, jobs); ++j) threads.emplace_back(worker);
+    } catch (const std::system_error& e) {
+        std::fprintf(stderr, "rotbench: could start %zu of %d threads (%s); running on %zu\n", threads.size() + 1, jobs, e.what(),
+                     threads.size() + 1);
+    }
     worker();
     for (auto& t : threads) t.join();
     if (error) std::rethrow_exception(error);

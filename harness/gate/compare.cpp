@@ -67,6 +67,13 @@ Comparison compare_runs(const std::vector<RunResult>& base, const std::vector<Ru
             c.notes.push_back(fmt::format("{} {} {} dt={}: in the baseline only", r.spec.scene, r.spec.scheme, kind_name(r.spec.kind),
                                           g(r.spec.dt)));
 
+    if (pairs.empty()) {  // comparing nothing proves nothing
+        Verdict none = verdict("baseline_matched", "(any scene)", "(any scheme)", where);
+        none.passed = false;
+        none.message = fmt::format("no run of the new results is in the baseline ({} new, {} in the baseline): nothing was compared",
+                                   now.size(), base.size());
+        c.verdicts.push_back(none);
+    }
     for (const auto& pair : pairs) {
         const auto& runs = matched[pair];
         const auto& [scene, scheme] = pair;
@@ -93,12 +100,24 @@ Comparison compare_runs(const std::vector<RunResult>& base, const std::vector<Ru
         // Stability: a run that became unstable, or a stability limit that fell.
         Verdict stab = verdict("baseline_stability", scene, scheme, where);
         stab.passed = true;
-        stab.message = fmt::format("baseline_stability on {}: no run became unstable", scene);
+        stab.message = fmt::format("baseline_stability on {}: no run became unstable or failed", scene);
         for (const auto& [b, n] : runs) {
             if (b->value(metric::unstable) == 0.0 && n->value(metric::unstable) == 1.0) {
                 stab.passed = false;
                 stab.message = fmt::format("baseline_stability on {}: the run at dt = {} is unstable now ({})", scene, g(n->spec.dt),
                                            n->failure);
+                break;
+            }
+            // A failed run (or an ensemble every member of which failed) has no errors to compare:
+            // it is a regression, never a pass by default. So is a member more that failed.
+            const double members_before = b->value(metric::ensemble_failed), members_now = n->value(metric::ensemble_failed);
+            if ((b->failure.empty() && !n->failure.empty()) || members_now > members_before) {
+                stab.passed = false;
+                stab.message = fmt::format("baseline_stability on {}: the run at dt = {} fails now{} ({})", scene, g(n->spec.dt),
+                                           std::isfinite(members_now) ? fmt::format(", {:g} of its members against {:g}", members_now,
+                                                                                    members_before)
+                                                                      : "",
+                                           n->failure.empty() ? "some members failed" : n->failure);
                 break;
             }
             const double lb = b->value(metric::dt_empirical), ln = n->value(metric::dt_empirical);

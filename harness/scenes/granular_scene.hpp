@@ -9,6 +9,8 @@
 #include "harness/granular/wall_outline.hpp"
 #include "harness/scenes/scene.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <memory>
 
 namespace rotbench {
@@ -72,14 +74,18 @@ protected:
     Bodies lattice_packing(const Vec3& lo, const Vec3& hi) const {
         RandomStream r = random();
         const double jitter = 0.05 * largest_reach(), spacing = 2.0 * (largest_reach() + jitter);
-        const auto across = [&](int k) { return std::max(1, static_cast<int>(std::floor((hi[k] - lo[k]) / spacing))); };
-        const int nx = across(0), ny = across(1);
+        // Counted in floating point and capped by the stones: any box a user gives fits (a row
+        // wider than the stones is never needed).
+        const double most = static_cast<double>(std::max<std::size_t>(cluster_count(), 1));
+        const auto across = [&](int k) { return static_cast<std::size_t>(std::clamp(std::floor((hi[k] - lo[k]) / spacing), 1.0, most)); };
+        const std::size_t nx = across(0), per_layer = nx * across(1);
         std::vector<int> shapes;
         std::vector<Vec3> places;
         std::vector<Quat> orientations;
         for (std::size_t i = 0; i < cluster_count(); ++i) {
-            const int layer = static_cast<int>(i) / (nx * ny), in_layer = static_cast<int>(i) % (nx * ny);
-            const Vec3 cell((in_layer % nx + 0.5) * spacing, (in_layer / nx + 0.5) * spacing, (layer + 0.5) * spacing);
+            const std::size_t layer = i / per_layer, in_layer = i % per_layer;
+            const Vec3 cell((static_cast<double>(in_layer % nx) + 0.5) * spacing, (static_cast<double>(in_layer / nx) + 0.5) * spacing,
+                            (static_cast<double>(layer) + 0.5) * spacing);
             places.push_back(lo + cell + jitter * Vec3(r.uniform(-1, 1), r.uniform(-1, 1), r.uniform(-1, 1)));
             shapes.push_back(static_cast<int>(r.index(ballast_shape_count)));
             orientations.push_back(r.rotation());

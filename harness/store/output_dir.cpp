@@ -215,6 +215,18 @@ fs::path OutputDir::claim(const std::string& relative) const {
     return file;
 }
 
+void check_distinct_outputs(const std::vector<std::pair<std::string, fs::path>>& outputs) {
+    std::vector<std::pair<std::string, fs::path>> seen;
+    for (const auto& [option, file] : outputs) {
+        if (file.empty()) continue;
+        std::error_code ec;
+        const fs::path resolved = fs::weakly_canonical(fs::absolute(file), ec);
+        for (const auto& [other, where] : seen)
+            if (where == resolved) throw InputError(option + " and " + other + " name one file, " + file.string() + "; give each its own");
+        seen.push_back({option, resolved});
+    }
+}
+
 void check_output_file(const fs::path& file, const std::string& option, bool overwrite, const std::string& signature) {
     std::error_code ec;
     const fs::path parent = file.parent_path();

@@ -63,4 +63,8 @@ private:
 // that rotbench writes); so no other file is ever replaced.
 void check_output_file(const std::filesystem::path& file, const std::string& option, bool overwrite, const std::string& signature);
 
+// Refused (InputError, one line) when two of a command's outputs, each (option, file), are one
+// file: the one written last would silently take the other's place. An empty file is not given.
+void check_distinct_outputs(const std::vector<std::pair<std::string, std::filesystem::path>>& outputs);
+
 }  // namespace rotbench
