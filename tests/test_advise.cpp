@@ -111,6 +111,11 @@ TEST_CASE("advise refuses a particle that is not one, in one line with exit 2, b
         {{"--omega", "-5"}, "--omega"},
         {{"--t-end", "-1"}, "--t-end"},
         {{"--t-end", "1e-9"}, "shorter than one period of the contact"},
+        // Over the budget of a run (advice_max_steps steps, at most as many radians of spin):
+        // hours of runs and gigabytes of reference before, refused now before any work.
+        {{"--t-end", "1e6"}, "a run of advise takes at most 2e+06"},
+        {{"--omega", "1e9"}, "more than a run of at most 2e+06 steps resolves"},
+        {{"--stiffness", "1e-30"}, "more than a run of at most 2e+06 steps resolves"},
         {{"--schemes", "nope"}, "unknown scheme 'nope'"},
     };
     for (const auto& [change, message] : bad) {

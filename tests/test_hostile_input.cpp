@@ -38,6 +38,11 @@ TEST_CASE("hostile inputs: devices, FIFOs, deep nesting and oversized files are 
     std::string tables = "[dipole_top]\nfield = ";
     for (int i = 0; i < 100000; ++i) tables += "{x=";
     write(dir / "deep_tables.toml", tables + "1" + std::string(100000, '}') + "\n");
+    // So does a dotted key: a table a part, in a header or before '='.
+    std::string dotted = "a";
+    for (int i = 0; i < 200000; ++i) dotted += ".a";
+    write(dir / "dotted_header.toml", "[" + dotted + "]\n");
+    write(dir / "dotted_key.toml", dotted + " = 1\n");
     write(dir / "big.toml", "");
     fs::resize_file(dir / "big.toml", 2u << 20);  // sparse: 2 MiB of zeros, over the 1 MiB a config may have
     const std::string gate_out = (dir / "gate_out").string();
@@ -50,6 +55,8 @@ TEST_CASE("hostile inputs: devices, FIFOs, deep nesting and oversized files are 
              {{"--plugin", fifo, "run", "--out", out}, "not a regular file"},
              {{"run", "--config", (dir / "deep_arrays.toml").string(), "--out", out}, "deep_arrays.toml:2:"},
              {{"run", "--config", (dir / "deep_tables.toml").string(), "--out", out}, "nested more than 64 levels deep"},
+             {{"run", "--config", (dir / "dotted_header.toml").string(), "--out", out}, "dotted_header.toml:1:131: a key of more than 64 dotted parts"},
+             {{"run", "--config", (dir / "dotted_key.toml").string(), "--out", out}, "dotted_key.toml:1:130: a key of more than 64 dotted parts"},
              {{"run", "--config", (dir / "big.toml").string(), "--out", out}, "more than the 1048576 this input may have"},
              {{"report", fifo}, "cannot read"},
              {{"merge", fifo, fifo, "--out", out}, "cannot read"},

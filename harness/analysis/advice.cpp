@@ -50,7 +50,10 @@ Outcome advise_one(Executor& executor, const StabilityProbe& probe, const ParamO
         if (stable(r) && relative_error(r) < advice_asymptotic_error) points.push_back({r.spec.dt, relative_error(r)});
         if (std::isfinite(r.value(metric::ns_per_step))) ns.push_back(r.value(metric::ns_per_step));
     };
-    for (int k = 0; k < advice_ladder_rungs; ++k) add_rung(dt0 / std::pow(2.0, k));
+    for (int k = 0; k < advice_ladder_rungs && t_end / (dt0 / std::pow(2.0, k)) <= advice_max_steps; ++k) add_rung(dt0 / std::pow(2.0, k));
+    if (ladder.size() < 2)
+        return {false, o.r, fmt::format("its ladder from {:.3g} s would need more than {:.3g} steps a run over {:g} s (the budget of a run)",
+                                        dt0, advice_max_steps, t_end)};
     // A blow-up is the scheme's instability (it records its fail_step); anything else crashed, hung or threw.
     if (!ladder.front().failure.empty() && !ladder.front().has(metric::fail_step))
         return {false, o.r, "its run failed: " + ladder.front().failure};
@@ -63,7 +66,7 @@ Outcome advise_one(Executor& executor, const StabilityProbe& probe, const ParamO
     // A scheme whose limit is far above the steps its accuracy needs (zvw_corrected on a stiff
     // contact) ends its ladder before its error is asymptotic: halve on, while the error still
     // falls, until the order can be fitted (a run costs no more than advice_max_steps).
-    while (std::none_of(ladder.begin(), ladder.end(), meets) && !fit_order(points).sufficient && stable(ladder.back()) &&
+    while (std::none_of(ladder.begin(), ladder.end(), meets) && !fit_order(points).sufficient && stable(ladder.back()) && ladder.size() >= 2 &&
            relative_error(ladder.back()) < relative_error(ladder[ladder.size() - 2]) && t_end / (ladder.back().spec.dt / 2) <= advice_max_steps)
         add_rung(ladder.back().spec.dt / 2);
     std::string extrapolated;
@@ -120,9 +123,20 @@ ParamOverrides particle_params(const Particle& p) {
                              {"zeta", {p.zeta}},
                              {"omega", {p.omega}}};
     const auto scene = make_scene(scene_id, params);  // every value checked, named on error
-    const double period = dynamic_cast<const StabilityProbe&>(*scene).period();
+    const auto& probe = dynamic_cast<const StabilityProbe&>(*scene);
+    const double period = probe.period();
     if (p.t_end > 0 && p.t_end < period)
         throw InputError(fmt::format("--t-end: {:g} s is shorter than one period of the contact ({:.3g} s)", p.t_end, period));
+    // The budget of a run, checked before any work: the ladder starts near Peng's step, and a
+    // run of advice_max_steps steps resolves at most that many radians of spin.
+    const double t_end = p.t_end > 0 ? p.t_end : advice_default_periods * period, dt = advice_safety * probe.predicted_limit();
+    if (t_end / dt > advice_max_steps)
+        throw InputError(fmt::format("--t-end: {:g} s is {:.3g} steps of {:.3g} s (0.9 of Peng's step); a run of advise takes at most "
+                                     "{:.3g}: give at most {:.3g} s", t_end, t_end / dt, dt, advice_max_steps, advice_max_steps * dt));
+    if (p.omega * t_end > advice_max_steps)
+        throw InputError(fmt::format("--omega {:g} rad/s turns the particle {:.3g} rad in {:.3g} s, more than a run of at most {:.3g} "
+                                     "steps resolves; give a slower spin or a shorter --t-end", p.omega, p.omega * t_end, t_end,
+                                     advice_max_steps));
     return params;
 }
 

@@ -19,9 +19,11 @@ std::string ascii_toml(std::string_view text, const std::string& name) {
     Context context = Context::bare;
     std::size_t line = 1, column = 1;
     // toml++ parses nesting by recursion: a file of 200 000 nested tables overflows its stack.
-    // No configuration nests more than a few levels; 64 is refused before toml++ sees it.
+    // No configuration nests more than a few levels; 64 is refused before toml++ sees it. So
+    // is a key of more than 64 dotted parts ([a.a.a...], a.a.a... = 1): a table each. Dots
+    // are counted since the last line break, '=', ',', '{' or '[', so a value's (1.5) count once.
     constexpr int max_depth = 64;
-    int depth = 0;
+    int depth = 0, dots = 0;
     const auto fail = [&](const std::string& what) { throw InputError(fmt::format("{}:{}:{}: {}", name, line, column, what)); };
     const auto starts = [&](std::size_t i, std::string_view s) { return text.substr(i, s.size()) == s; };
     for (std::size_t i = 0; i < text.size();) {
@@ -54,6 +56,8 @@ std::string ascii_toml(std::string_view text, const std::string& name) {
                 } else if ((c == ']' || c == '}') && depth > 0) {
                     --depth;
                 }
+                if (c == '.' && ++dots > max_depth) fail(fmt::format("a key of more than {} dotted parts", max_depth));
+                if (c == '=' || c == ',' || c == '{' || c == '[') dots = 0;
                 if (c == '#') context = Context::comment;
                 else if (starts(i, "\"\"\"")) context = Context::multiline_basic, length = 3;
                 else if (starts(i, "'''")) context = Context::multiline_literal, length = 3;
@@ -80,7 +84,7 @@ std::string ascii_toml(std::string_view text, const std::string& name) {
         }
         for (std::size_t k = i; k < i + length; ++k) {
             ascii += text[k];
-            if (text[k] == '\n') ++line, column = 1;
+            if (text[k] == '\n') ++line, column = 1, dots = 0;
             else ++column;
         }
         i += length;
