@@ -1,19 +1,11 @@
 #include "reports/gnuplot.hpp"
 
+#include "harness/exec/isolation.hpp"
 #include "harness/store/output_files.hpp"
 
-#include <atomic>
-#include <cerrno>
 #include <cstdlib>
-#include <cstring>
-#include <fcntl.h>
 #include <fmt/format.h>
-#include <spawn.h>
-#include <sys/stat.h>
-#include <sys/wait.h>
 #include <unistd.h>
-
-extern char** environ;
 
 namespace rotbench {
 namespace fs = std::filesystem;
@@ -36,6 +28,9 @@ std::string find_gnuplot() {
     return "";
 }
 
+// A plot takes gnuplot well under a second; a minute means it is stuck.
+constexpr double gnuplot_seconds = 60;
+
 // A whole SVG ends with its closing tag.
 bool whole_svg(const fs::path& file) {
     const auto text = read_file(file);
@@ -56,35 +51,21 @@ Drawn draw_with_gnuplot(const OutputDir& dir, const std::string& relative_script
     static const std::string gnuplot = find_gnuplot();
     if (gnuplot.empty()) return {false, "gnuplot is not installed"};
     const fs::path svg = dir.claim(relative_svg);
-    static std::atomic<unsigned long> serial{0};
-    const fs::path temporary = svg.parent_path() / fmt::format(".{}.{}.{}.tmp", svg.filename().string(), ::getpid(), serial++);
+    const auto [temporary, fd] = open_temporary(svg);  // gnuplot writes into it
+    ::close(fd);
     const fs::path script_file = dir.path() / relative_script;
 
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_addchdir_np(&actions, script_file.parent_path().c_str());
-    posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
-    posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
-    posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0);
     // The output name is the script's string: quotes in it are escaped for gnuplot's '...'.
     std::string out_name;
     for (char c : fs::absolute(temporary).string()) out_name += c == '\'' ? std::string("''") : std::string(1, c);
-    std::string assignment = "out='" + out_name + "'", name = script_file.filename().string();
-    std::string program = gnuplot, flag = "-e";
-    char* argv[] = {program.data(), flag.data(), assignment.data(), name.data(), nullptr};
-    pid_t pid = 0;
-    const int spawned = posix_spawn(&pid, gnuplot.c_str(), &actions, nullptr, argv, environ);
-    posix_spawn_file_actions_destroy(&actions);
-    if (spawned != 0) return {false, fmt::format("gnuplot could not be started: {}", std::strerror(spawned))};
-    int status = 0;
-    while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-    }
+    // Under a time limit, as every program rotbench starts: a gnuplot that never exits costs its
+    // plot, not the command.
+    const WorkerOutput ran = run_program({gnuplot, "-e", "out='" + out_name + "'", script_file.filename().string()},
+                                         script_file.parent_path().string(), gnuplot_seconds, isolation_memory(1), "gnuplot");
     std::error_code ec;
-    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || !whole_svg(temporary)) {
+    if (!ran.failure.empty() || !whole_svg(temporary)) {
         fs::remove(temporary, ec);
-        return {false, fmt::format("gnuplot failed on {} ({})", relative_script,
-                                   WIFEXITED(status) ? fmt::format("exit status {}", WEXITSTATUS(status))
-                                                     : fmt::format("signal {}", WTERMSIG(status)))};
+        return {false, fmt::format("gnuplot failed on {} ({})", relative_script, ran.failure.empty() ? "no whole SVG" : ran.failure)};
     }
     fs::rename(temporary, svg, ec);
     if (ec) {

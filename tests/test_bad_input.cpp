@@ -107,6 +107,8 @@ TEST_CASE("bad input: numbers that are negative, zero, NaN, inf, empty, duplicat
             {{"stability", "--zeta", "nan", "--out", out}, "--zeta: 'nan' must be a finite number"},
             {{"stability", "--omega-max", "0", "--out", out}, "--omega-max: '0' must be a finite number greater than 0"},
             {{"reference", "--scene", "cylinder_free", "--samples", "0", "--out", file}, "--samples must be at least 1"},
+            {{"reference", "--scene", "silo_discharge", "--out", file}, "a granular scene has no reference trajectory"},
+            {{"reference", "--scene", "direct_shear", "--out", file}, "a granular scene has no reference trajectory"},
             {{"trajectory", "--scene", "cylinder_free", "--scheme", "direct", "--dt", "-1", "--out", file}, "--dt: '-1' must be"},
         },
         dir / "out");

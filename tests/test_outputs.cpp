@@ -151,7 +151,7 @@ TEST_CASE("outputs: without gnuplot the report says it is not installed, and a f
     const Cli failing = binary(with(one_run, {"--out", (dir / "b").string()}), {"PATH=" + (dir / "bin").string()});
     REQUIRE(failing.status == 0);
     const std::string report = read(dir / "b" / "report.md");
-    CHECK_THAT(report, Catch::Contains("gnuplot failed on plots/convergence_dipole_top.gp (exit status 3)"));
+    CHECK_THAT(report, Catch::Contains("gnuplot failed on plots/convergence_dipole_top.gp (its gnuplot exited with status 3"));
     CHECK(report.find("not installed") == std::string::npos);
     CHECK_FALSE(fs::exists(dir / "b" / "plots" / "convergence_dipole_top.svg"));  // no empty or partial SVG
     fs::remove_all(dir);

@@ -65,6 +65,10 @@ public:
     void add_options(CLI::App& command) override { o_.add_to(command); }
     int run(const Invocation& how) override {
         const auto scene = o_.make();
+        // A granular flow (runs too long to repeat) would be integrated whole to 1e-12, for hours.
+        if (scene->scene_traits().times_in_run)
+            throw InputError("--scene " + o_.scene + ": a granular scene has no reference trajectory (its schemes are compared with "
+                             "each other); rotbench trajectory exports a scheme's");
         o_.check();
         o_.write(reference_states(*scene, o_.samples), how.out);
         return 0;

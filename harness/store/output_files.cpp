@@ -30,10 +30,10 @@ int write_all(int fd, const std::string& content) {
 
 }  // namespace
 
-void write_file_atomically(const std::filesystem::path& path, const std::string& content) {
-    // The temporary is made new (O_EXCL, never through a link) under a name nobody can guess
-    // ahead: in a shared folder (ROTBENCH_CACHE) another user cannot plant a link or a file
-    // there for rotbench to write through, and two writers each rename a complete file.
+std::pair<std::filesystem::path, int> open_temporary(const std::filesystem::path& path) {
+    // Made new (O_EXCL, never through a link) under a name nobody can guess ahead: in a shared
+    // folder (ROTBENCH_CACHE) another user cannot plant a link or a file there for rotbench to
+    // write through, and two writers each rename a complete file.
     thread_local std::mt19937_64 random{std::random_device{}() ^ static_cast<std::uint64_t>(::getpid())};
     std::filesystem::path temporary;
     int fd = -1;
@@ -43,6 +43,11 @@ void write_file_atomically(const std::filesystem::path& path, const std::string&
         if (fd < 0 && errno != EEXIST) break;
     }
     if (fd < 0) throw OutputError(fmt::format("cannot write {}: {}", path.string(), std::strerror(errno)));
+    return {temporary, fd};
+}
+
+void write_file_atomically(const std::filesystem::path& path, const std::string& content) {
+    const auto [temporary, fd] = open_temporary(path);
     int error = write_all(fd, content);
     if (::close(fd) != 0 && error == 0) error = errno;
     if (error == 0 && std::rename(temporary.c_str(), path.c_str()) != 0) error = errno;

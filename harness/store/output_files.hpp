@@ -10,6 +10,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace rotbench {
 
@@ -21,6 +22,10 @@ struct OutputError : std::runtime_error {
 
 // OutputError naming the file and the reason; no temporary file is left behind.
 void write_file_atomically(const std::filesystem::path& path, const std::string& content);
+
+// A new, empty temporary file beside `path` (O_EXCL, never through a link, under a random
+// name), open for writing: the one way rotbench names a temporary. OutputError when it cannot.
+std::pair<std::filesystem::path, int> open_temporary(const std::filesystem::path& path);
 
 // Appends `content` to the file (made if absent) in append mode: one write(2) a call, so
 // that records appended by several threads do not interleave. OutputError naming the file.
