@@ -65,13 +65,14 @@ Drawn draw_with_gnuplot(const OutputDir& dir, const std::string& relative_script
     std::error_code ec;
     if (!ran.failure.empty() || !whole_svg(temporary)) {
         fs::remove(temporary, ec);
+        release_temporary(temporary);
         return {false, fmt::format("gnuplot failed on {} ({})", relative_script, ran.failure.empty() ? "no whole SVG" : ran.failure)};
     }
     fs::rename(temporary, svg, ec);
-    if (ec) {
-        fs::remove(temporary, ec);
-        throw OutputError("cannot write " + svg.string() + ": " + ec.message());
-    }
+    const std::string renamed = ec ? ec.message() : "";
+    if (ec) fs::remove(temporary, ec);
+    release_temporary(temporary);
+    if (!renamed.empty()) throw OutputError("cannot write " + svg.string() + ": " + renamed);
     return {true, ""};
 }
 

@@ -172,3 +172,39 @@ TEST_CASE("outputs: two outputs of one command on one file are refused before an
     CHECK(fs::is_empty(dir));
     fs::remove_all(dir);
 }
+
+TEST_CASE("outputs: a signal outside a sweep ends the command by that signal and leaves no temporary file") {
+    const fs::path dir = fresh_dir("outputs_signal");
+    REQUIRE(cli(with(one_run, {"--out", (dir / "o").string()})).status == 0);
+    // A gnuplot that takes its time: the SVG's temporary exists while rotbench waits for it.
+    fs::create_directories(dir / "bin");
+    write(dir / "bin" / "gnuplot", "#!/bin/sh\nexec sleep 3\n");
+    fs::permissions(dir / "bin" / "gnuplot", fs::perms::owner_all);
+    const auto temporaries = [&] {
+        std::size_t n = 0;
+        for (const auto& e : fs::recursive_directory_iterator(dir / "o"))
+            if (e.path().extension() == ".tmp") ++n;
+        return n;
+    };
+    std::vector<std::string> args = {ROTBENCH_EXE, "report", (dir / "o").string()};
+    const std::string path = "PATH=" + (dir / "bin").string() + ":/usr/bin:/bin";
+    const pid_t pid = fork();
+    if (pid == 0) {
+        freopen("/dev/null", "w", stdout);
+        freopen("/dev/null", "w", stderr);
+        putenv(const_cast<char*>(path.c_str()));
+        std::vector<char*> argv;
+        for (auto& a : args) argv.push_back(a.data());
+        argv.push_back(nullptr);
+        execv(argv[0], argv.data());
+        _exit(127);
+    }
+    while (temporaries() == 0) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    kill(pid, SIGTERM);
+    int status = 0;
+    waitpid(pid, &status, 0);
+    CHECK(WIFSIGNALED(status));
+    CHECK(WTERMSIG(status) == SIGTERM);
+    CHECK(temporaries() == 0);
+    fs::remove_all(dir);
+}

@@ -41,6 +41,7 @@ std::string version_text() {
 
 int run_cli_arguments(const std::vector<std::string>& arguments, std::ostream& out, std::ostream& err,
                       const std::optional<std::filesystem::path>& resuming) {
+    remove_temporaries_on_signal();
     std::vector<const char*> argv = {"rotbench"};
     for (const auto& a : arguments) argv.push_back(a.c_str());
     const int argc = static_cast<int>(argv.size());

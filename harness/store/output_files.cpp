@@ -2,13 +2,16 @@
 
 #include "schemes/registry.hpp"
 
+#include <atomic>
 #include <cerrno>
+#include <csignal>
 #include <cmath>
 #include <cstdio>
 #include <cstdint>
 #include <cstring>
 #include <fcntl.h>
 #include <fmt/format.h>
+#include <mutex>
 #include <random>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -28,7 +31,49 @@ int write_all(int fd, const std::string& content) {
     return 0;
 }
 
+// The temporaries in flight, for a signal handler: fixed storage, read with atomics only.
+constexpr std::size_t temporary_slots = 256;
+struct TemporarySlot {
+    std::atomic<bool> used{false};
+    char path[4096] = {};
+};
+TemporarySlot temporaries[temporary_slots];
+
+void list_temporary(const std::filesystem::path& temporary) {
+    const std::string& text = temporary.native();
+    if (text.size() >= sizeof TemporarySlot::path) return;
+    for (auto& slot : temporaries) {
+        if (slot.used.load(std::memory_order_relaxed)) continue;
+        static std::mutex claim;
+        std::lock_guard lock(claim);
+        if (slot.used.load(std::memory_order_relaxed)) continue;
+        std::memcpy(slot.path, text.c_str(), text.size() + 1);
+        slot.used.store(true, std::memory_order_release);
+        return;
+    }  // all in use: this one is not removed by a signal (256 writes at once)
+}
+
+extern "C" void remove_temporaries_and_end(int signal) {
+    for (auto& slot : temporaries)
+        if (slot.used.load(std::memory_order_acquire)) ::unlink(slot.path);
+    ::signal(signal, SIG_DFL);
+    ::raise(signal);
+}
+
 }  // namespace
+
+void release_temporary(const std::filesystem::path& temporary) {
+    for (auto& slot : temporaries)
+        if (slot.used.load(std::memory_order_acquire) && temporary.native() == slot.path) slot.used.store(false, std::memory_order_release);
+}
+
+void remove_temporaries_on_signal() {
+    struct sigaction action {};
+    action.sa_handler = remove_temporaries_and_end;
+    sigemptyset(&action.sa_mask);
+    sigaction(SIGINT, &action, nullptr);
+    sigaction(SIGTERM, &action, nullptr);
+}
 
 std::pair<std::filesystem::path, int> open_temporary(const std::filesystem::path& path) {
     // Made new (O_EXCL, never through a link) under a name nobody can guess ahead: in a shared
@@ -43,6 +88,7 @@ std::pair<std::filesystem::path, int> open_temporary(const std::filesystem::path
         if (fd < 0 && errno != EEXIST) break;
     }
     if (fd < 0) throw OutputError(fmt::format("cannot write {}: {}", path.string(), std::strerror(errno)));
+    list_temporary(temporary);
     return {temporary, fd};
 }
 
@@ -51,8 +97,9 @@ void write_file_atomically(const std::filesystem::path& path, const std::string&
     int error = write_all(fd, content);
     if (::close(fd) != 0 && error == 0) error = errno;
     if (error == 0 && std::rename(temporary.c_str(), path.c_str()) != 0) error = errno;
+    if (error != 0) ::unlink(temporary.c_str());
+    release_temporary(temporary);
     if (error != 0) {
-        ::unlink(temporary.c_str());
         throw OutputError(fmt::format("cannot write {}: {}", path.string(), std::strerror(error)));
     }
 }

@@ -25,7 +25,14 @@ void write_file_atomically(const std::filesystem::path& path, const std::string&
 
 // A new, empty temporary file beside `path` (O_EXCL, never through a link, under a random
 // name), open for writing: the one way rotbench names a temporary. OutputError when it cannot.
+// It is listed until release_temporary (after its rename, or its removal), so that a signal
+// that ends the process removes it (remove_temporaries_on_signal).
 std::pair<std::filesystem::path, int> open_temporary(const std::filesystem::path& path);
+void release_temporary(const std::filesystem::path& temporary);
+
+// From now on SIGINT or SIGTERM, where nothing else handles them (an executor stops its runs
+// itself), first removes the temporaries in flight, then ends the process by that signal.
+void remove_temporaries_on_signal();
 
 // Appends `content` to the file (made if absent) in append mode: one write(2) a call, so
 // that records appended by several threads do not interleave. OutputError naming the file.
