@@ -218,3 +218,19 @@ TEST_CASE("bad input: output directories that hold results, are files, or cannot
     CHECK(read(dir / "file") == "kept\n");
     fs::remove_all(dir);
 }
+
+TEST_CASE("bad input found only by running is found before: the last ensemble seed, the CI step summary") {
+    const fs::path dir = fresh_dir("bad_before_work");
+    const std::string out = (dir / "out").string();
+    // Each seed alone is valid; the ensemble's last is not (seeds stay below 9e15).
+    check_rows({{{"run", "--scenes", "silo_discharge", "--schemes", "direct", "--quick", "--set", "silo_discharge.seed=8999999999999999",
+                  "--ensemble", "3", "--out", out},
+                 "--ensemble 3 from seed 8999999999999999: silo_discharge.seed: must be a whole number"}},
+               out);
+    ::setenv("GITHUB_STEP_SUMMARY", (dir / "absent" / "summary.md").c_str(), 1);
+    check_rows({{{"gate", (fs::path(ROTBENCH_SOURCE_DIR) / "gates" / "default.toml").string(), "--schemes", "direct", "--out", out},
+                 "$GITHUB_STEP_SUMMARY: cannot write " + (dir / "absent" / "summary.md").string()}},
+               out);
+    ::unsetenv("GITHUB_STEP_SUMMARY");
+    fs::remove_all(dir);
+}

@@ -161,6 +161,10 @@ TEST_CASE("clients: a bad client file is refused in one line naming the file, li
     CHECK_THAT(refused(ok + "claims = \"fincham\"\nscenes2 = 1\n"), Catch::Contains("unknown key 'scenes2'"));
     CHECK_THAT(refused("id = \"c\"\nprogram = [\"true\"]\nscenes = [\"asymmetric_fre\"]\nclaims = \"direct\"\n"),
                Catch::Contains("unknown scene 'asymmetric_fre'"));
+    // An id is part of file names: a long one would fail the outputs once the runs are made.
+    const std::string long_id(max_id_length + 1, 'c');
+    CHECK_THAT(refused("id = \"" + long_id + "\"\nprogram = [\"true\"]\nscenes = [\"asymmetric_free\"]\nclaims = \"direct\"\n"),
+               Catch::Contains("c.toml:1:6: id '" + long_id + "' is not 1 to 64 letters, digits and underscores"));
     fs::remove_all(dir);
 }
 

@@ -63,6 +63,11 @@ std::vector<RunSpec> plan_sweep(const SweepSpec& spec, std::vector<std::string>*
         const auto& keys = scene->params.entries();
         const bool seeded = std::any_of(keys.begin(), keys.end(), [](const auto& e) { return e.key == "seed"; });
         const int members = seeded ? spec.ensemble : 1;
+        if (members > 1) try {  // the last member's seed checked now, not once the others have run
+                make_scene(scene_id, ensemble_member(with_t_end, scene->params.number("seed"), members - 1));
+            } catch (const InputError& e) {
+                throw InputError(fmt::format("--ensemble {} from seed {:.0f}: {}", members, scene->params.number("seed"), e.what()));
+            }
         const bool horizon = judges_energy(scene_info(*scene));
         for (const auto& scheme_id : scheme_ids) {
             if (const std::string why = why_not_taken(scheme_id, scene_id); !why.empty()) {

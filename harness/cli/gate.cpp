@@ -23,20 +23,17 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// $GITHUB_STEP_SUMMARY belongs to the CI runner and to every step: appended to, never replaced.
-void append_to(const std::string& path, const std::string& text) {
-    const int fd = ::open(path.c_str(), O_WRONLY | O_APPEND | O_CREAT | O_CLOEXEC, 0644);
-    if (fd < 0) throw InputError("$GITHUB_STEP_SUMMARY " + path + ": cannot open it to append");
-    std::size_t done = 0;
-    while (done < text.size()) {
-        const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
-        if (n <= 0) {
-            ::close(fd);
-            throw InputError("$GITHUB_STEP_SUMMARY " + path + ": cannot append to it");
-        }
-        done += static_cast<std::size_t>(n);
+// $GITHUB_STEP_SUMMARY belongs to the CI runner and to every step: appended to, never replaced;
+// checked before any work (an empty append), so that a wrong one is bad input, not a lost gate.
+std::string step_summary() {
+    const char* step = std::getenv("GITHUB_STEP_SUMMARY");
+    if (!step || !*step) return "";
+    try {
+        append_to_file(step, "");
+    } catch (const OutputError& e) {
+        throw InputError(std::string("$GITHUB_STEP_SUMMARY: ") + e.what());
     }
-    ::close(fd);
+    return step;
 }
 
 class GateVerb final : public Verb {
@@ -69,6 +66,7 @@ public:
         const fs::path out_json = out_.empty() ? fs::path() : fs::path(out_) / "summary.json";
         check_distinct_outputs({{"--junit", junit_}, {"--junit (summary.json beside it)", junit_json}, {"--summary", summary_}});
         check_distinct_outputs({{"--junit", junit_}, {"--summary", summary_}, {"--out (its summary.json)", out_json}});
+        const std::string step = step_summary();
         if (!junit_.empty()) {
             check_output_file(junit_, "--junit", overwrite_, junit_signature);
             check_output_file(fs::path(junit_).parent_path() / "summary.json", "--junit (summary.json beside it)", overwrite_,
@@ -120,7 +118,7 @@ public:
         }
         const std::string markdown = gate_markdown(result, file_);
         if (!summary_.empty()) write_file_atomically(summary_, markdown);
-        if (const char* step = std::getenv("GITHUB_STEP_SUMMARY"); step && *step) append_to(step, markdown);
+        if (!step.empty()) append_to_file(step, markdown);
         if (dir) {
             dir->write("gate.csv", gate_csv(result));
             dir->write("summary.json", json);

@@ -111,7 +111,7 @@ std::string load_client(const std::string& path) {
     client.path = absolute;
     client.hash = hash;
     client.id = text(path, "id", *id_node);
-    if (!is_id(client.id)) toml_error(path, *id_node, "id '" + client.id + "' is not letters, digits and underscores");
+    if (!is_id(client.id)) toml_error(path, *id_node, "id '" + client.id + "' is not 1 to " + std::to_string(max_id_length) + " letters, digits and underscores");
     if (SchemeRegistry::instance().contains(client.id))
         toml_error(path, *id_node, "scheme '" + client.id + "' is already registered; give the client another id");
     const std::string dir = std::filesystem::path(absolute).parent_path().string();

@@ -73,7 +73,7 @@ std::vector<double> parse_nonnegative_list(const std::string& text, const std::s
 }
 
 bool is_id(const std::string& text) {
-    return !text.empty() &&
+    return !text.empty() && text.size() <= max_id_length &&
            std::all_of(text.begin(), text.end(), [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; });
 }
 

@@ -27,7 +27,9 @@ std::vector<std::string> parse_id_list(const std::string& text, const Registry<P
                                        const std::string& kind);
 
 std::vector<std::string> split_commas(const std::string& text);
-// An id as schemes, scenes and metrics have them: letters, digits and underscores, not empty.
+// An id as schemes, scenes and metrics have them: 1 to max_id_length letters, digits and
+// underscores (an id is part of file names, which the file system limits to 255 bytes).
+inline constexpr std::size_t max_id_length = 64;
 bool is_id(const std::string& text);
 std::vector<std::string> split_on(const std::string& text, char separator);
 

@@ -66,7 +66,7 @@ std::vector<std::string> load_plugin(const std::string& path) {
     if (ids.empty()) throw InputError(where + ": the plug-in registers no scheme");
     auto& ours = SchemeRegistry::instance();
     for (const auto& id : ids) {
-        if (!is_id(id)) throw InputError(where + ": scheme id '" + id + "' is not letters, digits and underscores");
+        if (!is_id(id)) throw InputError(where + ": scheme id '" + id + "' is not 1 to " + std::to_string(max_id_length) + " letters, digits and underscores");
         if (ours.contains(id))
             throw InputError(where + ": scheme '" + id + "' is already registered; give the plug-in's scheme another id");
     }

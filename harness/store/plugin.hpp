@@ -12,7 +12,7 @@
 
 namespace rotbench {
 
-// Returns the ids of the schemes it added. Every id must be letters, digits and underscores,
+// Returns the ids of the schemes it added. Every id must be 1 to 64 letters, digits and underscores,
 // and new to the registry.
 std::vector<std::string> load_plugin(const std::string& path);
 
