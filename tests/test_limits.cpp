@@ -1,6 +1,8 @@
 // The limits a batch system sets never crash rotbench: it does the work with what it is given
-// (harness/exec/parallel.hpp).
+// (harness/exec/parallel.hpp), and its own limits are never blamed on a scheme.
+#include "harness/exec/isolation.hpp"
 #include "harness/exec/parallel.hpp"
+#include "tests/cli_helpers.hpp"
 
 #include <catch2/catch.hpp>
 #include <atomic>
@@ -10,6 +12,7 @@
 #include <vector>
 
 using namespace rotbench;
+using namespace rotbench::test;
 
 TEST_CASE("limits: threads the system will not make cost parallelism, never the work") {
     // In a child whose address space leaves room for a few thread stacks only (8 MiB each).
@@ -34,4 +37,30 @@ TEST_CASE("limits: threads the system will not make cost parallelism, never the 
     waitpid(pid, &status, 0);
     REQUIRE(WIFEXITED(status));  // not killed by std::terminate
     CHECK(WEXITSTATUS(status) == 0);
+}
+
+TEST_CASE("limits: rotbench's own out-of-memory is never the scheme's blow-up, and leaves no cut file") {
+    if (!memory_limit_enforced()) return;  // AddressSanitizer's shadow memory takes the whole limit
+    const fs::path dir = fresh_dir("limits_memory");
+    fs::create_directories(dir);
+    // A million states of a million-step run, in 150 MB of address space: the records cannot fit.
+    const Cli starved = binary({"trajectory", "--scene", "asymmetric_free", "--scheme", "direct", "--dt", "1e-6", "--samples", "1000000",
+                                "--out", (dir / "t.csv").string()},
+                               {}, [] {
+                                   const rlimit limit{150ul << 20, 150ul << 20};
+                                   setrlimit(RLIMIT_AS, &limit);
+                               });
+    CHECK(starved.status != 0);
+    CHECK(starved.status != 4);  // not called a bug of rotbench's
+    CHECK(one_line(starved.err));
+    CHECK_THAT(starved.err, Catch::Contains("out of memory"));
+    CHECK_THAT(starved.err, !Catch::Contains("blew up"));
+    CHECK_FALSE(fs::exists(dir / "t.csv"));
+    // A blow-up is the scheme's: its trajectory up to there is written, and said to be cut.
+    const Cli blown = cli({"trajectory", "--scene", "sphere_pair", "--scheme", "direct", "--dt", "1e-3", "--out", (dir / "b.csv").string()});
+    CHECK(blown.status == 0);
+    CHECK_THAT(blown.err, Catch::Contains("direct blew up at step 21"));
+    CHECK_THAT(blown.err, Catch::Contains("holds the trajectory up to there"));
+    CHECK(fs::exists(dir / "b.csv"));
+    fs::remove_all(dir);
 }

@@ -118,6 +118,10 @@ int run_cli_arguments(const std::vector<std::string>& arguments, std::ostream& o
     } catch (const OutputError& e) {  // a full disk once the work had started: what is finished is kept
         err << "rotbench: " << e.what() << "\n";
         return 3;
+    } catch (const std::bad_alloc&) {  // the machine's or the batch system's limit, met once the work had started
+        err << "rotbench: out of memory: what was asked for outgrew what this process may have (ulimit -v, the machine); "
+               "ask for less (--samples, --t-end, --jobs, --ensemble)\n";
+        return 3;
     } catch (const std::exception& e) {  // a bug of rotbench's: said in one line, not an abort
         err << "rotbench: internal error: " << e.what() << "\n";
         return 4;

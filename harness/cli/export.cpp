@@ -5,6 +5,7 @@
 #include "harness/exec/export.hpp"
 #include "harness/analysis/sweep_plan.hpp"
 #include "harness/cli/config.hpp"
+#include "harness/cli/outputs.hpp"
 #include "harness/store/output_dir.hpp"
 #include "harness/store/output_files.hpp"
 #include "harness/store/parse.hpp"
@@ -51,7 +52,9 @@ struct ExportOptions {
 
     // Before the work: the file must be new, or one an earlier export wrote and --overwrite.
     void check() const {
-        if (samples < 1) throw InputError("--samples must be at least 1");
+        // Bounded like the energy series: 2e9 rows took the machine's 24 GB before being killed.
+        if (samples < 1 || samples > max_series_samples)
+            throw InputError("--samples must be 1 to " + std::to_string(max_series_samples) + ", not " + std::to_string(samples));
         check_output_file(out, "--out", overwrite, trajectory_header);
     }
     void write(const std::vector<std::vector<double>>& rows, std::ostream& log) const {
@@ -96,7 +99,9 @@ public:
         task.kind = RunKind::states;
         const RunResult r = executor.run(task);
         if (r.interrupted) return executor.interrupted();
-        if (r.series.empty()) {
+        // A blow-up or a throw is the scheme's: its trajectory up to there is written. Running out of
+        // memory is rotbench's: nothing is written that could pass for the scheme's.
+        if (r.series.empty() || r.failure == out_of_memory_failure) {
             how.err << "rotbench: " << o_.scheme << " " << r.failure << "; nothing written\n";
             return 1;
         }

@@ -5,6 +5,7 @@
 #include "harness/exec/timing.hpp"
 #include "harness/exec/reference.hpp"
 #include "harness/exec/run_kinds.hpp"
+#include "harness/store/plugin.hpp"
 #include "schemes/quaternion.hpp"
 
 #include <algorithm>
@@ -224,14 +225,20 @@ std::unique_ptr<Scene> scene_of(const RunSpec& spec) {
 RunResult run_one(const RunSpec& requested, const RunOptions& options) {
     const double start = thread_cpu_seconds();
     RunResult r;
-    switch (requested.kind) {
-        case RunKind::reversal: r = run_reversal(requested); break;
-        case RunKind::stability: r = run_stability_search(requested); break;
-        case RunKind::trajectory: r = run_trajectory(requested, options, registered_scheme(requested.scheme)); break;
-        case RunKind::horizon: r = run_horizon(requested, registered_scheme(requested.scheme)); break;
-        case RunKind::amplification: r = run_amplification(requested); break;
-        case RunKind::spectral: r = run_spectral(requested); break;
-        case RunKind::states: r = run_states(requested, options); break;
+    try {
+        switch (requested.kind) {
+            case RunKind::reversal: r = run_reversal(requested); break;
+            case RunKind::stability: r = run_stability_search(requested); break;
+            case RunKind::trajectory: r = run_trajectory(requested, options, registered_scheme(requested.scheme)); break;
+            case RunKind::horizon: r = run_horizon(requested, registered_scheme(requested.scheme)); break;
+            case RunKind::amplification: r = run_amplification(requested); break;
+            case RunKind::spectral: r = run_spectral(requested); break;
+            case RunKind::states: r = run_states(requested, options); break;
+        }
+    } catch (const std::bad_alloc&) {  // what the run records (reference, series) outgrew memory: not the scheme's failure
+        r = RunResult{requested, {}, {}};
+        r.failure = out_of_memory_failure;
+        return r;
     }
     if (!r.interrupted) r.metrics.emplace_back(metric::cpu_seconds_run, thread_cpu_seconds() - start);  // all it took
     return r;
@@ -276,6 +283,8 @@ RunResult run_trajectory(const RunSpec& requested, const RunOptions& options, co
         observer.write(result);
         unstable = observer.unstable();
     } catch (const std::exception& e) {
+        // A built-in kernel allocates nothing: its run's memory is rotbench's (run_one says so).
+        if (dynamic_cast<const std::bad_alloc*>(&e) && !plugin_of(requested.scheme)) throw;
         result.failure = std::string("threw: ") + e.what();
         unstable = true;
     } catch (...) {  // a plug-in may throw anything

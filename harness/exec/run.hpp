@@ -27,8 +27,11 @@ struct RunOptions {
 std::unique_ptr<Scene> scene_of(const RunSpec& spec);
 
 // Runs and measures; never throws for a failing scheme (the failure is recorded), but
-// throws InputError for unknown ids or bad numbers.
+// throws InputError for unknown ids or bad numbers. A run whose records outgrow memory fails
+// with out_of_memory_failure: rotbench's limit, never counted as the scheme's blow-up.
 RunResult run_one(const RunSpec& spec, const RunOptions& options = {});
+inline constexpr const char* out_of_memory_failure =
+    "rotbench ran out of memory for this run's records (reference, series), not the scheme's failure";
 
 // The loop shared by the measured run and the timing run. The scheme cannot reach the
 // scene: the one force evaluation per step happens here, and here it is counted.
