@@ -142,3 +142,29 @@ TEST_CASE("the report of a quick run with its stability study") {
         CHECK(scripts >= 6);
     }
 }
+
+TEST_CASE("a stability.csv that rotbench stability could not have written is refused, naming the line") {
+    const fs::path dir = fs::temp_directory_path() / ("rotbench_stability_forged_" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    const std::string header = "scene,scheme,zeta,kind,dt_empirical,dt_amplification,dt_peng,dt_verlet_normal\n";
+    const std::string good = "sphere_pair,direct,0,sharp,0.000173,0.000173,0.000173,0.000324\n";
+    write_file_atomically(dir / "stability.csv", header + good);
+    REQUIRE(read_stability(dir).size() == 1);
+    for (const auto& [row, message] : std::vector<std::pair<std::string, std::string>>{
+             {"silo_discharge,direct,0,sharp,1,1,1,1\n", "scene 'silo_discharge' is not a stability scene"},
+             {"sphere_pair,dir ect,0,sharp,1,1,1,1\n", "'dir ect' is not a scheme id"},
+             {"sphere_pair,zvw,-0.1,sharp,1,1,1,1\n", "zeta must be a finite damping ratio"},
+             {"sphere_pair,zvw,0,sharp,inf,1,1,1\n", "kind 'sharp' does not go with dt_empirical inf"},
+             {"sphere_pair,zvw,0,none,0.001,1,1,1\n", "kind 'none' does not go with dt_empirical 0.001"},
+             {"sphere_pair,zvw,0,weak,-1,1,1,1\n", "a negative time step"},
+             {"sphere_pair,zvw,0,sharp,1,1,0,1\n", "dt_peng must be a positive time step"},
+             {good, "sphere_pair direct is there twice"},
+         }) {
+        INFO(row);
+        write_file_atomically(dir / "stability.csv", header + good + row);
+        CHECK_THROWS_AS(read_stability(dir), InputError);
+        CHECK_THROWS_WITH(read_stability(dir), Catch::Contains((dir / "stability.csv").string() + ":3") && Catch::Contains(message));
+    }
+    fs::remove_all(dir);
+}
