@@ -1,6 +1,7 @@
 #include "harness/cli/cli.hpp"
 
 #include "harness/cli/verb.hpp"
+#include "harness/exec/machine.hpp"
 #include "harness/store/output_files.hpp"
 #include "harness/store/client.hpp"
 #include "harness/store/plugin.hpp"
@@ -42,6 +43,7 @@ std::string version_text() {
 int run_cli_arguments(const std::vector<std::string>& arguments, std::ostream& out, std::ostream& err,
                       const std::optional<std::filesystem::path>& resuming) {
     remove_temporaries_on_signal();
+    fit_allocator_to_address_space();
     std::vector<const char*> argv = {"rotbench"};
     for (const auto& a : arguments) argv.push_back(a.c_str());
     const int argc = static_cast<int>(argv.size());

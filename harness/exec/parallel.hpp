@@ -35,10 +35,15 @@ void parallel_for(std::size_t count, int jobs, Work&& work) {
         }
     };
     std::vector<std::thread> threads;
+    const int wanted = std::min<int>(std::max(1, jobs), static_cast<int>(std::min<std::size_t>(count, 1u << 20)));
+    const int affordable = static_cast<int>(std::clamp<long>(long{affordable_threads()} + 1, 1, wanted));  // the caller's too
+    if (affordable < wanted)
+        std::fprintf(stderr, "rotbench: the address-space limit leaves room for %d of %d threads; running on %d\n", affordable, wanted,
+                     affordable);
     try {
-        for (int j = 1; j < std::max(1, jobs); ++j) threads.emplace_back(worker);
+        for (int j = 1; j < affordable; ++j) threads.emplace_back(worker);
     } catch (const std::system_error& e) {
-        std::fprintf(stderr, "rotbench: could start %zu of %d threads (%s); running on %zu\n", threads.size() + 1, jobs, e.what(),
+        std::fprintf(stderr, "rotbench: could start %zu of %d threads (%s); running on %zu\n", threads.size() + 1, affordable, e.what(),
                      threads.size() + 1);
     }
     worker();
