@@ -133,9 +133,12 @@ ParamOverrides particle_params(const Particle& p) {
     if (t_end / dt > advice_max_steps)
         throw InputError(fmt::format("--t-end: {:g} s is {:.3g} steps of {:.3g} s (0.9 of Peng's step); a run of advise takes at most "
                                      "{:.3g}: give at most {:.3g} s", t_end, t_end / dt, dt, advice_max_steps, advice_max_steps * dt));
+    const std::string over = p.t_end > 0 ? fmt::format("{:.3g} s", t_end)
+                                         : fmt::format("{:.3g} s ({:g} periods of the contact, the default --t-end)", t_end,
+                                                       advice_default_periods);
     if (p.omega * t_end > advice_max_steps)
-        throw InputError(fmt::format("--omega {:g} rad/s turns the particle {:.3g} rad in {:.3g} s, more than a run of at most {:.3g} "
-                                     "steps resolves; give a slower spin or a shorter --t-end", p.omega, p.omega * t_end, t_end,
+        throw InputError(fmt::format("--omega {:g} rad/s turns the particle {:.3g} rad in {}, more than a run of at most {:.3g} "
+                                     "steps resolves; give a slower spin or a shorter --t-end", p.omega, p.omega * t_end, over,
                                      advice_max_steps));
     return params;
 }
