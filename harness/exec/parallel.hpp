@@ -35,7 +35,7 @@ void parallel_for(std::size_t count, int jobs, Work&& work) {
         }
     };
     std::vector<std::thread> threads;
-    const int wanted = std::min<int>(std::max(1, jobs), static_cast<int>(std::min<std::size_t>(count, 1u << 20)));
+    const int wanted = std::max(1, std::min<int>(jobs, static_cast<int>(std::min<std::size_t>(count, 1u << 20))));
     const int affordable = static_cast<int>(std::clamp<long>(long{affordable_threads()} + 1, 1, wanted));  // the caller's too
     if (affordable < wanted)
         std::fprintf(stderr, "rotbench: the address-space limit leaves room for %d of %d threads; running on %d\n", affordable, wanted,
