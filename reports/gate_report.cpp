@@ -171,9 +171,9 @@ std::string gate_summary_json(const GateResult& result, const std::string& gate_
     return summary.dump(2) + "\n";
 }
 
-std::string gate_markdown(const GateResult& result, const std::string& gate_file) {
-    std::string md = fmt::format("## rotbench gate: {}\n\n`{}`: {}.\n\n", result.passed() ? "passed" : "FAILED",
-                                 markdown_cell(gate_file), counts(result));
+std::string gate_markdown(const GateResult& result, const std::string& verb, const std::string& against) {
+    std::string md = fmt::format("## rotbench {}: {}\n\n`{}`: {}.\n\n", verb, result.passed() ? "passed" : "FAILED",
+                                 markdown_cell(against), counts(result));
     for (const auto& w : result.warnings) md += "> **Warning:** " + markdown_cell(w) + "\n>\n";
     md += "\n| scheme | verdict | checks | failed | expected failures |\n|---|---|---:|---:|---:|\n";
     for (const auto& [scheme, ok] : schemes(result)) {

@@ -106,6 +106,25 @@ TEST_CASE("compare: a run or an ensemble that fails now is a regression, never a
     }
 }
 
+TEST_CASE("compare: a change from round-off is not a percentage, and orders that barely differ are shown apart") {
+    const auto base = ladder("no_squish");
+    auto from_round_off = base;
+    for (auto& r : from_round_off)
+        for (auto& [name, value] : r.metrics)
+            if (name == "omega_err_max") value = 1e-17;
+    const Verdict acc = find(compare_runs(from_round_off, base, {}, "base"), "baseline_accuracy");
+    CHECK_FALSE(acc.passed);
+    CHECK_THAT(acc.message, Catch::Contains("went from round-off (1e-17) to") && !Catch::Contains("%)"));
+    // A drop of 0.002 in order: reported with the digits that tell the two apart.
+    auto slightly = base;
+    for (auto& r : slightly)
+        for (auto& [name, value] : r.metrics)
+            if (name == "omega_err_max") value *= std::pow(r.spec.dt / 0.02, -0.002);
+    const Verdict ord = find(compare_runs(base, slightly, {}, "base"), "baseline_order");
+    CHECK(ord.passed);
+    CHECK_THAT(ord.message, Catch::Matches(".*fell from 2\\.\\d{4} to 1\\.99\\d{2}.*|.*fell from 2\\.\\d{4} to 2\\.\\d{4}.*"));
+}
+
 TEST_CASE("compare: comparing nothing fails") {
     const auto base = ladder("direct"), now = ladder("zvw");
     const Comparison c = compare_runs(base, now, {}, "base");
@@ -166,8 +185,10 @@ TEST_CASE("rotbench compare: exit 0 on an identical rerun, 1 on a degraded one, 
         for (auto& [name, value] : r.metrics)
             if (r.spec.scheme == "zvw" && r.spec.dt == 0.005 && name == "omega_err_max") value *= 1.5;
     write(dir / "b" / "runs.jsonl", run_store(degraded));
-    const Cli worse = cli({"compare", (dir / "a").string(), (dir / "b").string(), "--cost-tolerance", "100"});
+    const Cli worse = cli({"compare", (dir / "a").string(), (dir / "b").string(), "--cost-tolerance", "100", "--summary",
+                           (dir / "reports" / "compare.md").string()});
     CHECK(worse.status == 1);
+    CHECK_THAT(read(dir / "reports" / "compare.md"), Catch::StartsWith("## rotbench compare: FAILED"));
     CHECK_THAT(worse.out, Catch::Contains("FAIL dipole_top/zvw: zvw: baseline_accuracy on dipole_top: omega_err_max at dt = 0.005"));
     CHECK(cli({"compare", (dir / "a").string(), (dir / "absent").string()}).status == 2);
     fs::remove_all(dir);

@@ -116,7 +116,7 @@ public:
             write_file_atomically(junit_, gate_junit(result, file_));
             write_file_atomically(fs::path(junit_).parent_path() / "summary.json", json);
         }
-        const std::string markdown = gate_markdown(result, file_);
+        const std::string markdown = gate_markdown(result, "gate", file_);
         if (!summary_.empty()) write_file_atomically(summary_, markdown);
         if (!step.empty()) append_to_file(step, markdown);
         if (dir) {

@@ -91,7 +91,10 @@ Comparison compare_runs(const std::vector<RunResult>& base, const std::vector<Ru
                 const double change = before > 0 ? (after - before) / before : INFINITY;
                 if (change > acc.measured) {
                     acc.measured = change;
-                    worst = fmt::format("{} at dt = {} went from {} to {} ({:+.1f} %)", m, g(n->spec.dt), g(before), g(after), 100 * change);
+                    // From round-off, a ratio says nothing: the error is said to have left it.
+                    worst = before > order_floor
+                                ? fmt::format("{} at dt = {} went from {} to {} ({:+.1f} %)", m, g(n->spec.dt), g(before), g(after), 100 * change)
+                                : fmt::format("{} at dt = {} went from round-off ({}) to {}", m, g(n->spec.dt), g(before), g(after));
                 }
             }
         acc.passed = acc.measured <= o.error_tolerance;
@@ -149,7 +152,9 @@ Comparison compare_runs(const std::vector<RunResult>& base, const std::vector<Ru
                 const double drop = fb.fit.order - fn.fit.order;
                 if (drop > ord.measured) {
                     ord.measured = drop;
-                    order_text = fmt::format("the order of {} fell from {:.2f} to {:.2f}", fb.metric, fb.fit.order, fn.fit.order);
+                    // Two decimals, or as many as it takes to show the two orders apart.
+                    const int digits = fmt::format("{:.2f}", fb.fit.order) == fmt::format("{:.2f}", fn.fit.order) ? 4 : 2;
+                    order_text = fmt::format("the order of {} fell from {:.{}f} to {:.{}f}", fb.metric, fb.fit.order, digits, fn.fit.order, digits);
                 }
             }
         ord.passed = ord.passed && ord.measured <= o.order_tolerance;
