@@ -1,6 +1,7 @@
 // The granular scenes end to end through the CLI: ensembles, their report section, shards.
 #include "cli_helpers.hpp"
 
+#include "harness/scenes/granular_scene.hpp"
 #include "harness/store/results_csv.hpp"
 
 #include <catch2/catch.hpp>
@@ -80,4 +81,20 @@ TEST_CASE("granular scenes: the seed's three schemes on ensembles of the silo an
     CHECK(report.find("6.90 s, 2.22 %") != std::string::npos);  // seed Table 4 beside
     CHECK(report.find("the scatter") != std::string::npos);
     fs::remove_all(dir);
+}
+
+TEST_CASE("granular scenes: a box 65 536 stones wide is packed (its stones per layer overflowed an int: SIGFPE)") {
+    for (const std::string scene_id : {"silo_discharge", "direct_shear"}) {
+        INFO(scene_id);
+        const auto probe = make_scene(scene_id, {{"clusters", {2}}});
+        double reach = 0;
+        for (const ClusterShape& s : dynamic_cast<const GranularScene&>(*probe).system().shapes()) reach = std::max(reach, s.reach);
+        // The lattice's spacing (granular_scene.hpp): 2 (reach + 0.05 reach); 65 536 of them each way are 2^32 a layer.
+        const double width = (65536 + 0.5) * 2.0 * 1.05 * reach;
+        const auto wide = make_scene(scene_id, {{"clusters", {2}}, {scene_id == "silo_discharge" ? "width" : "box", {width}}});
+        const Bodies b = wide->initial_state();
+        REQUIRE(b.size() == 2);
+        CHECK(b.position[0].allFinite());
+        CHECK((b.position[1] - b.position[0]).norm() > 2.0 * reach);  // side by side in the first row, apart
+    }
 }
