@@ -1,5 +1,6 @@
 #include "reports/cost_table.hpp"
 
+#include "harness/store/csv.hpp"
 #include "harness/store/output_files.hpp"
 #include "harness/store/parse.hpp"
 #include "reports/escape.hpp"
@@ -10,7 +11,6 @@
 #include <map>
 #include <optional>
 #include <set>
-#include <sstream>
 #include <vector>
 
 namespace rotbench {
@@ -18,33 +18,24 @@ namespace {
 
 using Row = std::map<std::string, std::string>;
 
-std::vector<std::string> split(const std::string& line) {
-    std::vector<std::string> cells;
-    std::stringstream in(line);
-    for (std::string cell; std::getline(in, cell, ',');) cells.push_back(cell);
-    if (!line.empty() && line.back() == ',') cells.emplace_back();
-    return cells;
-}
-
 std::optional<std::vector<Row>> read_rows(const std::filesystem::path& dir) {
+    const std::string name = (dir / "cost.csv").string();
     const auto text = read_file(dir / "cost.csv");
     if (!text) return std::nullopt;
-    std::stringstream in(*text);
-    std::string line;
-    std::getline(in, line);
-    const auto header = split(line);
+    const std::vector<CsvRow> records = parse_csv(*text, name);
+    if (records.empty()) return std::vector<Row>{};
+    const std::vector<std::string>& header = records.front().fields;
     std::vector<Row> rows;
     // A hand-edited table is input: a field that should be a number and is not is refused
     // here, with its line and column, not met later by the formatting.
     const std::set<std::string> text_columns = {"scheme", "public", "mode", "failure"};
-    for (int number = 2; std::getline(in, line); ++number) {
-        if (line.empty()) continue;
-        const auto cells = split(line);
+    for (auto record = records.begin() + 1; record != records.end(); ++record) {
+        if (record->size() == 1 && (*record)[0].empty()) continue;  // a blank line
         Row row;
-        for (std::size_t i = 0; i < header.size() && i < cells.size(); ++i) {
-            if (!text_columns.count(header[i]) && !cells[i].empty())
-                parse_finite(cells[i], fmt::format("{}:{}: column {}", (dir / "cost.csv").string(), number, header[i]));
-            row[header[i]] = cells[i];
+        for (std::size_t i = 0; i < header.size() && i < record->size(); ++i) {
+            if (!text_columns.count(header[i]) && !(*record)[i].empty())
+                parse_finite((*record)[i], where(name, *record) + ": column " + header[i]);
+            row[header[i]] = (*record)[i];
         }
         rows.push_back(std::move(row));
     }
