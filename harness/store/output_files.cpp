@@ -132,16 +132,30 @@ std::optional<std::string> read_file(const std::filesystem::path& path) {
     return text;
 }
 
-std::string read_input_file(const std::filesystem::path& path, const std::string& what, std::size_t max_bytes) {
-    const std::string where = what.empty() ? path.string() : what + " " + path.string();
-    // O_NONBLOCK: opening a FIFO with no writer would otherwise wait forever.
+namespace {
+
+// An input file open for reading, InputError naming `where` unless it is a regular file.
+// O_NONBLOCK: opening a FIFO with no writer would otherwise wait forever.
+int open_regular_input(const std::filesystem::path& path, const std::string& where, struct stat& st) {
     const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
     if (fd < 0) throw InputError(fmt::format("{}: cannot read the file ({})", where, std::strerror(errno)));
-    struct stat st {};
     if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
         ::close(fd);
         throw InputError(where + ": not a regular file" + (S_ISDIR(st.st_mode) ? " (a directory)" : ""));
     }
+    return fd;
+}
+
+std::string input_name(const std::filesystem::path& path, const std::string& what) {
+    return what.empty() ? path.string() : what + " " + path.string();
+}
+
+}  // namespace
+
+std::string read_input_file(const std::filesystem::path& path, const std::string& what, std::size_t max_bytes) {
+    const std::string where = input_name(path, what);
+    struct stat st {};
+    const int fd = open_regular_input(path, where, st);
     if (static_cast<std::size_t>(st.st_size) > max_bytes) {
         ::close(fd);
         throw InputError(fmt::format("{}: {} bytes, more than the {} this input may have", where, st.st_size, max_bytes));
@@ -167,14 +181,13 @@ std::string read_input_file(const std::filesystem::path& path, const std::string
 }
 
 std::ifstream open_input_stream(const std::filesystem::path& path, const std::string& what) {
-    const std::string where = what.empty() ? path.string() : what + " " + path.string();
-    std::error_code ec;
-    const auto status = std::filesystem::status(path, ec);
-    if (ec) throw InputError(fmt::format("{}: cannot read the file ({})", where, ec.message()));
-    if (!std::filesystem::is_regular_file(status))  // a FIFO would block the open
-        throw InputError(where + ": not a regular file" + (std::filesystem::is_directory(status) ? " (a directory)" : ""));
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw InputError(fmt::format("{}: cannot read the file ({})", where, std::strerror(errno)));
+    const std::string where = input_name(path, what);
+    struct stat st {};
+    const int fd = open_regular_input(path, where, st);
+    // The stream opens the file that fd has open (its /proc link), not whatever the path names now.
+    std::ifstream in(fmt::format("/proc/self/fd/{}", fd), std::ios::binary);
+    ::close(fd);
+    if (!in) throw InputError(where + ": cannot read the file");
     return in;
 }
 
