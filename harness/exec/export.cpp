@@ -1,5 +1,4 @@
 #include "harness/exec/export.hpp"
-#include "harness/store/plugin.hpp"
 
 #include "harness/exec/interrupt.hpp"
 #include "harness/exec/run_kinds.hpp"
@@ -76,8 +75,7 @@ RunResult run_states(const RunSpec& requested, const RunOptions& options) {
             return !interrupt_signal();
         });
     } catch (const std::exception& e) {
-        // A built-in kernel allocates nothing: its run's memory is rotbench's (run_one says so).
-        if (dynamic_cast<const std::bad_alloc*>(&e) && !plugin_of(requested.scheme)) throw;
+        if (rotbench_out_of_memory(e, requested.scheme)) throw;
         result.failure = fmt::format("threw after step {}: {}", last, e.what());
     } catch (...) {
         result.failure = fmt::format("threw after step {}", last);

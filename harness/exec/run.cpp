@@ -244,6 +244,10 @@ RunResult run_one(const RunSpec& requested, const RunOptions& options) {
     return r;
 }
 
+bool rotbench_out_of_memory(const std::exception& e, const std::string& scheme) {
+    return dynamic_cast<const std::bad_alloc*>(&e) && !plugin_of(scheme);
+}
+
 SchemeFactory registered_scheme(const std::string& id) { return SchemeRegistry::instance().at(id, "scheme").make; }
 
 RunResult run_trajectory(const RunSpec& requested, const RunOptions& options, const SchemeFactory& make) {
@@ -283,8 +287,7 @@ RunResult run_trajectory(const RunSpec& requested, const RunOptions& options, co
         observer.write(result);
         unstable = observer.unstable();
     } catch (const std::exception& e) {
-        // A built-in kernel allocates nothing: its run's memory is rotbench's (run_one says so).
-        if (dynamic_cast<const std::bad_alloc*>(&e) && !plugin_of(requested.scheme)) throw;
+        if (rotbench_out_of_memory(e, requested.scheme)) throw;
         result.failure = std::string("threw: ") + e.what();
         unstable = true;
     } catch (...) {  // a plug-in may throw anything

@@ -6,6 +6,7 @@
 #include "schemes/scheme.hpp"
 
 #include <cstdint>
+#include <exception>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -32,6 +33,9 @@ std::unique_ptr<Scene> scene_of(const RunSpec& spec);
 RunResult run_one(const RunSpec& spec, const RunOptions& options = {});
 inline constexpr const char* out_of_memory_failure =
     "rotbench ran out of memory for this run's records (reference, series), not the scheme's failure";
+// Whether `e`, thrown while `scheme` ran, is rotbench's own out-of-memory, which the run loops
+// pass up to run_one: a built-in kernel allocates nothing, a plug-in's bad_alloc is its own.
+bool rotbench_out_of_memory(const std::exception& e, const std::string& scheme);
 
 // The loop shared by the measured run and the timing run. The scheme cannot reach the
 // scene: the one force evaluation per step happens here, and here it is counted.
