@@ -6,6 +6,8 @@
 
 extern "C" __attribute__((visibility("default"))) const char* rotbench_plugin_abi() { return ROTBENCH_PLUGIN_ABI; }
 
+extern "C" __attribute__((visibility("default"))) const char* rotbench_plugin_build() { return ROTBENCH_PLUGIN_BUILD; }
+
 extern "C" __attribute__((visibility("default"))) const rotbench::SchemeRegistry* rotbench_plugin_schemes() {
     return &rotbench::SchemeRegistry::instance();
 }

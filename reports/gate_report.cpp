@@ -75,6 +75,16 @@ std::string gate_junit(const GateResult& result, const std::string& gate_file) {
         for (const Verdict* v : mine) time += v->seconds;
         out += fmt::format("  <testsuite name=\"{}\" tests=\"{}\" failures=\"{}\" skipped=\"{}\" time=\"{:.3f}\">\n",
                            xml_attribute(scheme), mine.size(), failed, skipped, time);
+        // What judged what: the gate file and, for a plug-in's scheme, the library (its hash and build).
+        std::vector<std::pair<std::string, std::string>> properties = {{"gate_file", gate_file}, {"gate_file_fnv1a", result.gate_file_hash}};
+        if (const auto it = result.schemes.find(scheme); it != result.schemes.end() && !it->second.plugin_path.empty())
+            properties.insert(properties.end(), {{"plugin", it->second.plugin_path},
+                                                 {"plugin_fnv1a", it->second.plugin_hash},
+                                                 {"plugin_build", it->second.plugin_build}});
+        out += "    <properties>\n";
+        for (const auto& [name, value] : properties)
+            out += fmt::format("      <property name=\"{}\" value=\"{}\"/>\n", name, xml_attribute(value));
+        out += "    </properties>\n";
         for (const Verdict* v : mine) {
             const auto [file, line] = file_and_line(v->of.location.empty() ? gate_file : v->of.location);
             out += fmt::format("    <testcase classname=\"rotbench.gate.{}\" name=\"{}\" file=\"{}\" line=\"{}\" time=\"{:.3f}\"",
@@ -145,11 +155,19 @@ std::string gate_summary_json(const GateResult& result, const std::string& gate_
         if (r.spec.timed && std::isfinite(r.value(metric::ns_per_step)) && by_scheme.count(r.spec.scheme))
             by_scheme[r.spec.scheme][metric::ns_per_step][r.spec.scene + " dt=" + format_number(r.spec.dt)] = r.value(metric::ns_per_step);
     json schemes_json = json::array();
-    for (const auto& [scheme, ok] : schemes(result)) schemes_json.push_back(by_scheme[scheme]);
+    for (const auto& [scheme, ok] : schemes(result)) {
+        json& s = by_scheme[scheme];
+        const auto it = result.schemes.find(scheme);
+        s["plugin"] = it == result.schemes.end() || it->second.plugin_path.empty()
+                          ? json(nullptr)
+                          : json{{"path", valid_utf8(it->second.plugin_path)}, {"fnv1a", it->second.plugin_hash}, {"build", it->second.plugin_build}};
+        schemes_json.push_back(s);
+    }
     json warnings = json::array();
     for (const auto& w : result.warnings) warnings.push_back(valid_utf8(w));
     const json summary = {{"format", "rotbench-gate-summary 1"},
                           {"gate_file", valid_utf8(gate_file)},
+                          {"gate_file_fnv1a", result.gate_file_hash},
                           {"passed", result.passed()},
                           {"counts",
                            {{"checks", result.verdicts.size()},

@@ -1,5 +1,7 @@
 #include "reports/markdown_report.hpp"
 
+#include "schemes/plugin_abi.hpp"
+
 #include "reports/clients_report.hpp"
 
 #include "reports/cost_table.hpp"
@@ -185,10 +187,12 @@ void schemes_section(std::string& md, const ResultSet& set, const std::vector<Ex
     for (const auto& id : unique_in_order(set.runs, &RunSpec::scheme)) {
         const SchemeInfo* s = set.scheme(id);
         if (!s) {
-            md += fmt::format("- **`{}`**: not registered in this rotbench (a plug-in? pass --plugin to describe it).\n", id);
+            md += fmt::format("- **`{}`**: not described (a folder written before rotbench kept schemes.json; pass --plugin).\n", id);
             continue;
         }
         md += fmt::format("- **`{}`**: {}. Source: {}.", id, s->summary, s->source);
+        if (!s->plugin_path.empty())
+            md += fmt::format(" Plug-in `{}` (FNV-1a {}), built {}.", s->plugin_path, s->plugin_hash, s->plugin_build);
         if (!s->notes.empty()) md += " Reading: " + s->notes;
         for (const auto& e : expected)
             if (e.scheme == id)
@@ -235,6 +239,11 @@ std::string markdown_report(const ResultSet& set, const std::string& command_lin
         "is `ns_per_step` (section {}). rotbench {} (commit {}), {} {}, flags `{}`, on {}; generated {} {} UTC by `{}`.\n\n",
         results.size(), schemes.size(), schemes.size() == 1 ? "" : "s", scenes.size(), scenes.size() == 1 ? "" : "s", failed, link("Verdicts", "Verdicts"), p.version, p.commit, p.compiler,
         p.build_type, p.flags, p.cpu, p.date.substr(0, 10), p.date.substr(11, 5), command_line);
+    for (const auto& [id, info] : set.schemes)  // the header's flags are rotbench's own: say where a plug-in's differ
+        if (!info.plugin_path.empty() && info.plugin_build != ROTBENCH_PLUGIN_BUILD)
+            md += fmt::format("**Warning: `{}` comes from a plug-in built {}** (`{}`; the built-in schemes: {}): its cost does not "
+                              "compare with theirs. Rebuild it with `rotbench_add_scheme()` and its default flags.\n\n",
+                              id, info.plugin_build, info.plugin_path, ROTBENCH_PLUGIN_BUILD);
 
     const std::string answer_heading = "The answer: the largest dt for a tolerance";
     md += "## Contents\n\n- " + link("Verdicts", "Verdicts") + " · " + link("The answer", answer_heading) + " · " +

@@ -49,6 +49,9 @@ struct SchemeClaims {
     // Not a claim: the group the report draws the scheme with ("seed", "kick_drift_kick", or
     // empty for the others). RegisterScheme sets "kick_drift_kick" for a KickDriftKick kernel.
     std::string family;
+    // Not a claim either: file:line of the RegisterScheme that makes them, where the gate points a
+    // failed claim (a CI annotation on the candidate's source, not on the gate file).
+    std::string declared_at;
 
     bool claims_nothing() const {
         return without_torque.order == 0 && with_torque.order == 0 && !exact_without_torque && !conserves_momentum &&
@@ -197,9 +200,11 @@ inline constexpr const char* kernel_family = "";
 template <SchemeKernel Kernel>
 struct RegisterScheme {
     static_assert(!requires { Kernel::family; }, "a kernel's `family` is no longer read: give .family in its SchemeClaims");
-    RegisterScheme(std::string id, std::string summary, std::string source, std::string notes = "",
-                   SchemeClaims claims = {}) {
+    // `file` and `line` default to the place of the registration (GCC and Clang builtins).
+    RegisterScheme(std::string id, std::string summary, std::string source, std::string notes = "", SchemeClaims claims = {},
+                   const char* file = __builtin_FILE(), int line = __builtin_LINE()) {
         if (claims.family.empty()) claims.family = kernel_family<Kernel>;
+        claims.declared_at = std::string(file) + ":" + std::to_string(line);
         SchemeRegistry::instance().add({std::move(id), std::move(summary), std::move(source), std::move(notes),
                                         [] { return std::make_unique<BatchedScheme<Kernel>>(); }, std::move(claims)});
     }

@@ -212,8 +212,8 @@ TEST_CASE("bad input: output directories that hold results, are files, or cannot
              }(),
              "--out /proc: the directory is not writable"},
             {{"stability", "--scenes", "sphere_pair", "--schemes", "direct", "--out", "/proc", "--overwrite"}, "not writable"},
-            {{"gate", DEFAULT_GATE, "--junit", (dir / "absent" / "j.xml").string()}, "--junit"},
-            {{"reference", "--scene", "cylinder_free", "--out", (dir / "absent" / "r.csv").string()}, "does not exist"},
+            {{"gate", DEFAULT_GATE, "--junit", file + "/j.xml"}, "--junit " + file + "/j.xml: " + file + " is not a directory"},
+            {{"reference", "--scene", "cylinder_free", "--out", file + "/sub/r.csv"}, "--out " + file + "/sub/r.csv: cannot create the directory"},
         },
         dir / "absent");
     for (const char* f : {"results.csv", "stability.csv", "gate.csv"}) CHECK(read(dir / "full" / f) == "kept\n");
@@ -234,5 +234,17 @@ TEST_CASE("bad input found only by running is found before: the last ensemble se
                  "$GITHUB_STEP_SUMMARY: cannot write " + (dir / "absent" / "summary.md").string()}},
                out);
     ::unsetenv("GITHUB_STEP_SUMMARY");
+    fs::remove_all(dir);
+}
+
+TEST_CASE("missing folders of gate --junit and reference --out are made, as --out makes its own") {
+    const fs::path dir = fresh_dir("missing_parents");
+    const Cli gate = binary({"gate", DEFAULT_GATE, "--schemes", "no_gyro", "--junit", (dir / "ci" / "reports" / "gate.xml").string()});
+    INFO(gate.out << gate.err);
+    CHECK(fs::is_regular_file(dir / "ci" / "reports" / "gate.xml"));
+    CHECK(fs::is_regular_file(dir / "ci" / "reports" / "summary.json"));
+    const Cli reference = binary({"reference", "--scene", "cylinder_free", "--samples", "10", "--out", (dir / "refs" / "r.csv").string()});
+    CHECK(reference.status == 0);
+    CHECK(fs::is_regular_file(dir / "refs" / "r.csv"));
     fs::remove_all(dir);
 }

@@ -176,3 +176,14 @@ TEST_CASE("rotbench --version names the version, the commit, the compiler and th
     CHECK_THAT(r.out, Catch::Contains("compiler GNU") || Catch::Contains("compiler Clang"));
     CHECK_THAT(r.out, Catch::Contains("-ffp-contract=off"));
 }
+
+TEST_CASE("merge refuses a whole run, and says how to add schemes to one instead") {
+    const fs::path dir = fresh_dir("merge_whole_run");
+    REQUIRE(binary({"run", "--schemes", "direct", "--scenes", "asymmetric_free", "--quick", "--out", (dir / "a").string()}).status == 0);
+    const Cli r = binary({"merge", (dir / "a").string(), "--out", (dir / "m").string()});
+    CHECK(r.status == 2);
+    CHECK(one_line(r.err));
+    CHECK_THAT(r.err, Catch::Contains("is a whole run, not a slice") && Catch::Contains("run it again with all of them"));
+    CHECK_FALSE(fs::exists(dir / "m"));
+    fs::remove_all(dir);
+}

@@ -123,3 +123,15 @@ TEST_CASE("a gate's why, written with non-ASCII text, reads back unchanged") {
     REQUIRE(checks.size() == 1);
     CHECK(checks[0].why == "\xce\x94t \xe2\x86\x92 0: \xcf\x89 error ~ \xce\x94t \xf0\x9f\x98\x80");
 }
+
+TEST_CASE("a gate's except leaves schemes out of \"*\", and means nothing without it") {
+    const std::string check = "[[check]]\nscene = \"cylinder_free\"\nmax_cost_ratio = 8\ndt = 1e-4\n";
+    const auto checks = parse_gate(check + "schemes = [\"*\"]\nexcept = [\"exact_splitting\", \"direct\"]\n", "g.toml").checks;
+    REQUIRE(checks.size() == 1);
+    CHECK(std::find(checks[0].schemes.begin(), checks[0].schemes.end(), "exact_splitting") == checks[0].schemes.end());
+    CHECK(std::find(checks[0].schemes.begin(), checks[0].schemes.end(), "direct") == checks[0].schemes.end());
+    CHECK(std::find(checks[0].schemes.begin(), checks[0].schemes.end(), "omelyan") != checks[0].schemes.end());
+    CHECK_THROWS_WITH(parse_gate(check + "schemes = [\"direct\"]\nexcept = [\"direct\"]\n", "g.toml"),
+                      Catch::Contains("'except' applies to schemes = [\"*\"] only"));
+    CHECK_THROWS_WITH(parse_gate(check + "schemes = [\"*\"]\nexcept = [\"nope\"]\n", "g.toml"), Catch::Contains("nope"));
+}

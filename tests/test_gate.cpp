@@ -180,10 +180,6 @@ TEST_CASE("gate: the CI outputs (JUnit, summary.json, gate.csv, Markdown, annota
                           "max_error = 0.05\ndt = 0.05\nwhy = \"x\"\n");
     const std::string step_summary = (dir / "step_summary.md").string();
     write(step_summary, "earlier step\n");
-    const Cli r = binary({"gate", (dir / "g.toml").string(), "--junit", (dir / "j" / "gate.xml").string(), "--out", (dir / "out").string()},
-                         {"GITHUB_ACTIONS=true", "GITHUB_STEP_SUMMARY=" + step_summary});
-    CHECK(r.status == 2);  // the --junit directory does not exist
-    fs::create_directories(dir / "j");
     const Cli ok = binary({"gate", (dir / "g.toml").string(), "--junit", (dir / "j" / "gate.xml").string(), "--out",
                            (dir / "out").string(), "--summary", (dir / "summary.md").string()},
                           {"GITHUB_ACTIONS=true", "GITHUB_STEP_SUMMARY=" + step_summary});
@@ -317,4 +313,25 @@ TEST_CASE("gate: the same verdicts from slices run apart and merged (--shard, me
     CHECK(count_of(verdicts(whole.out), "XFAIL") == 5);
     CHECK(cli({"gate", gate, "--shard", "1/2"}).status == 2);  // a slice needs --out
     fs::remove_all(dir);
+}
+
+TEST_CASE("the gate points a plug-in's failed claim at its registration, and names the plug-in and gate file it judged") {
+    const fs::path dir = fresh_dir("gate_candidate");
+    fs::create_directories(dir);
+    const Cli r = binary({"--plugin", PLUGIN_END_VELOCITY_ZVW, "gate", default_gate_without_timing(), "--schemes", "zvw_end_velocity",
+                          "--junit", (dir / "gate.xml").string()},
+                         {"GITHUB_ACTIONS=true"});
+    INFO(r.out << r.err);
+    CHECK(r.status == 1);
+    // The claim is made where RegisterScheme is called in the candidate's source, so that is where CI shows
+    // it (relative to the working directory when below it).
+    CHECK_THAT(r.out, Catch::Contains("tests/plugins/end_velocity_zvw.cpp,line="));
+    const std::string xml = read(dir / "gate.xml");
+    CHECK_THAT(xml, Catch::Contains("tests/plugins/end_velocity_zvw.cpp\" line=\""));
+    CHECK_THAT(xml, Catch::Contains("<property name=\"plugin\" value=\"" + fs::absolute(PLUGIN_END_VELOCITY_ZVW).string() + "\"/>"));
+    CHECK_THAT(xml, Catch::Contains("<property name=\"gate_file\" value=\"" + default_gate_without_timing() + "\"/>"));
+    CHECK(well_formed_xml(dir / "gate.xml"));
+    const std::string summary = read(dir / "summary.json");
+    CHECK_THAT(summary, Catch::Contains("\"gate_file_fnv1a\": \""));
+    CHECK_THAT(summary, Catch::Contains("\"build\": \"optimised, assertions off\""));
 }

@@ -52,3 +52,47 @@ TEST_CASE("plug-in: a scheme id another file registered is refused, and the same
     CHECK_THAT(clash.err, Catch::Contains("is already registered"));
     fs::remove_all(dir);
 }
+
+TEST_CASE("plug-in: a run remembers what it ran, so report and merge describe a plug-in without --plugin") {
+    const fs::path dir = fresh_dir("plugin_remembered");
+    const std::string run = (dir / "run").string(), stab = (dir / "run").string();
+    const std::vector<std::string> common = {"--schemes", "zvw_end_velocity,direct", "--scenes", "asymmetric_free", "--quick"};
+    std::vector<std::string> args = {"--plugin", PLUGIN_END_VELOCITY_ZVW, "run", "--out", run};
+    args.insert(args.end(), common.begin(), common.end());
+    REQUIRE(binary(args).status == 0);
+    const std::string row = "| `zvw_end_velocity` | 2 → ";  // the claimed order beside the observed one
+    CHECK_THAT(read(dir / "run" / "report.md"), Catch::Contains(row));
+    const std::string recorded = read(dir / "run" / "schemes.json");
+    CHECK_THAT(recorded, Catch::Contains("\"hash\"") && Catch::Contains("test_plugin_end_velocity_zvw") &&
+                             Catch::Contains("optimised, assertions off"));
+    // A stability study written into the same folder, then the report re-rendered, all without --plugin.
+    REQUIRE(binary({"--plugin", PLUGIN_END_VELOCITY_ZVW, "stability", "--schemes", "zvw_end_velocity", "--scenes", "sphere_pair",
+                    "--zeta", "0", "--out", stab, "--overwrite", "--quiet"})
+                .status == 0);
+    const Cli report = binary({"report", run});
+    INFO(report.out << report.err);
+    REQUIRE(report.status == 0);
+    const std::string md = read(dir / "run" / "report.md");
+    CHECK_THAT(md, Catch::Contains(row));
+    CHECK_THAT(md, Catch::Contains("Plug-in `") && Catch::Contains("built optimised, assertions off."));
+    // Two slices of a sweep, merged without --plugin.
+    for (const std::string shard : {"1/2", "2/2"}) {
+        std::vector<std::string> slice = {"--plugin", PLUGIN_END_VELOCITY_ZVW, "run", "--shard", shard,
+                                          "--out", (dir / ("s" + shard.substr(0, 1))).string()};
+        slice.insert(slice.end(), common.begin(), common.end());
+        REQUIRE(binary(slice).status == 0);
+    }
+    REQUIRE(binary({"merge", (dir / "s1").string(), (dir / "s2").string(), "--out", (dir / "merged").string()}).status == 0);
+    CHECK_THAT(read(dir / "merged" / "report.md"), Catch::Contains(row));
+    CHECK(read(dir / "merged" / "schemes.json") == recorded);
+}
+
+TEST_CASE("plug-in: a schemes.json that is not rotbench's is refused in one line") {
+    const fs::path dir = fresh_dir("plugin_bad_schemes");
+    REQUIRE(binary({"run", "--schemes", "direct", "--scenes", "asymmetric_free", "--quick", "--out", dir.string()}).status == 0);
+    write(dir / "schemes.json", "{\"direct\": {\"summary\": 1}}");
+    const Cli r = binary({"report", dir.string()});
+    CHECK(r.status == 2);
+    CHECK(one_line(r.err));
+    CHECK_THAT(r.err, Catch::Contains("schemes.json: not a schemes.json rotbench wrote"));
+}

@@ -67,8 +67,9 @@ Judgement judge_reversal(const RunResult& run);
 // A stability margin: the limit a stability search measured, at least `min_ratio` times Peng
 // et al.'s prediction (the bound is the gate file's).
 Judgement judge_stability_margin(const RunResult& search, double min_ratio);
-// A cost: the run's CPU time per step at most `max_ratio` times direct's on the same scene and
-// step (the bound is the gate file's; the two are timed alone, one after the other).
-Judgement judge_cost_ratio(const RunResult& run, const RunResult& direct, double max_ratio);
+// A cost (RunKind::cost): the scheme's CPU time per step at most `max_ratio` times direct's on the
+// same scene and step (the bound is the gate file's), unless significantly above it: the median
+// ratio's 95 % interval wholly above the bound fails.
+Judgement judge_cost_ratio(const RunResult& cost, double max_ratio);
 
 }  // namespace rotbench

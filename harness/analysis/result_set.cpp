@@ -1,15 +1,6 @@
 #include "harness/analysis/result_set.hpp"
 
-#include "harness/store/client.hpp"
-
 namespace rotbench {
-
-SchemeInfo scheme_info(const std::string& id) {
-    const auto& e = SchemeRegistry::instance().at(id, "scheme");
-    const LoadedClient* client = client_of(id);
-    return {e.id,    e.summary, e.source, e.notes, e.extra, client != nullptr, client ? client->counterpart : "",
-            client ? client->counterpart_note : ""};
-}
 
 SceneInfo scene_info(const Scene& scene) {
     const auto& entry = SceneRegistry::instance().at(scene.params.owner(), "scene");
@@ -28,12 +19,13 @@ SceneInfo scene_info(const Scene& scene) {
     return info;
 }
 
-ResultSet describe(std::vector<RunResult> runs) {
+ResultSet describe(std::vector<RunResult> runs, const SchemeInfos& recorded) {
     ResultSet set;
+    std::vector<std::string> schemes;
+    for (const auto& r : runs) schemes.push_back(r.spec.scheme);
+    set.schemes = describe_schemes(schemes, recorded);
     for (auto& r : runs) {
         if (!set.scenes.count(r.spec.scene)) set.scenes[r.spec.scene] = scene_info(*make_scene(r.spec.scene, r.spec.params));
-        if (!set.schemes.count(r.spec.scheme) && SchemeRegistry::instance().contains(r.spec.scheme))
-            set.schemes[r.spec.scheme] = scheme_info(r.spec.scheme);
         (r.spec.kind == RunKind::horizon ? set.horizons : set.runs).push_back(std::move(r));
     }
     return set;

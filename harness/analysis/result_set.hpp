@@ -4,6 +4,7 @@
 
 #include "harness/exec/run.hpp"
 #include "harness/scenes/scene.hpp"
+#include "harness/store/scheme_record.hpp"
 #include "schemes/scheme.hpp"
 
 #include <cstddef>
@@ -22,19 +23,12 @@ struct SceneInfo {
     double zeta = 0;               // its damping ratio, for a contact scene
 };
 
-struct SchemeInfo {
-    std::string id, summary, source, notes;
-    SchemeClaims claims;
-    bool client = false;      // run by a program outside rotbench (harness/store/client.hpp)
-    std::string counterpart;  // a client's: the built-in scheme it should equal (empty: none)
-    std::string counterpart_note;  // why it is not that scheme's map, where it is not
-};
 
 struct ResultSet {
     std::vector<RunResult> runs;      // every run but the horizon runs
     std::vector<RunResult> horizons;  // the horizon runs (RunKind::horizon), for the bounded-energy verdicts
     std::map<std::string, SceneInfo> scenes;    // every scene of the runs (with the parameters of its first run)
-    std::map<std::string, SchemeInfo> schemes;  // every scheme of the runs that is registered in this process
+    SchemeInfos schemes;  // every scheme of the runs registered in this process or recorded with them
 
     const SceneInfo& scene(const std::string& id) const { return scenes.at(id); }
     const SchemeInfo* scheme(const std::string& id) const {
@@ -43,9 +37,9 @@ struct ResultSet {
     }
 };
 
-// The runs with the descriptions of their scenes and schemes (InputError for an unknown scene).
-ResultSet describe(std::vector<RunResult> runs);
+// The runs with the descriptions of their scenes and schemes (InputError for an unknown scene);
+// a scheme not registered in this process is described as `recorded` says (schemes.json).
+ResultSet describe(std::vector<RunResult> runs, const SchemeInfos& recorded = {});
 SceneInfo scene_info(const Scene& scene);
-SchemeInfo scheme_info(const std::string& id);  // of a registered scheme
 
 }  // namespace rotbench

@@ -91,7 +91,9 @@ int run_cli_arguments(const std::vector<std::string>& arguments, std::ostream& o
         const auto load = [&] {
             for (const auto& plugin : plugins) {
                 const auto ids = load_plugin(plugin);
-                if (!internal) err << "rotbench: loaded " << join(ids, ", ") << " from " << plugin << "\n";
+                if (internal) continue;
+                err << "rotbench: loaded " << join(ids, ", ") << " from " << plugin << "\n";
+                if (const std::string w = build_warning(*plugin_of(ids.front())); !w.empty()) err << "rotbench: warning: " << w << "\n";
             }
             for (const auto& client : clients) {
                 const std::string id = load_client(client);

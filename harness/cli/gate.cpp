@@ -76,7 +76,7 @@ public:
         std::optional<OutputDir> dir;
         if (how.resuming || !out_.empty())
             dir = OutputDir::open(how.resuming ? *how.resuming : fs::path(out_),
-                                  {"gate", "gate.csv", slice.shard ? slice_files : std::vector<std::string>{"gate.csv", "summary.json", "runs.jsonl", "results.csv", "runs.csv"},
+                                  {"gate", "gate.csv", slice.shard ? slice_files : std::vector<std::string>{"gate.csv", "summary.json", "runs.jsonl", "schemes.json", "results.csv", "runs.csv"},
                                    overwrite_, how.resuming.has_value()});
 
         const std::vector<RunResult> baseline = baseline_.empty() ? std::vector<RunResult>{} : read_results(baseline_);

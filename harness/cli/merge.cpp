@@ -2,6 +2,7 @@
 #include "harness/cli/outputs.hpp"
 #include "harness/cli/verb.hpp"
 #include "harness/store/shard.hpp"
+#include "harness/store/scheme_record.hpp"
 
 namespace rotbench {
 namespace {
@@ -19,7 +20,9 @@ public:
         parse_tolerances(tolerances_);
         const auto results = merge_shards(dirs);
         const OutputDir out = OutputDir::open(out_, {"run", "results.csv", run_files, overwrite_});
-        write_outputs(out, results, how.command_line, report_options(tolerances_, out.path()), how.out);
+        SchemeInfos recorded;  // what each slice ran: merge needs no --plugin to describe a plug-in's runs
+        for (const auto& dir : dirs) recorded.merge(read_schemes(dir));
+        write_outputs(out, results, how.command_line, report_options(tolerances_, out.path()), how.out, recorded);
         return 0;
     }
 

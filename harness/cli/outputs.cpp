@@ -46,15 +46,15 @@ ReportOptions report_options(const std::vector<std::string>& tolerances, const f
 }
 
 void write_outputs(const OutputDir& dir, const std::vector<RunResult>& all_runs, const std::string& command_line,
-                   const ReportOptions& report, std::ostream& out) {
+                   const ReportOptions& report, std::ostream& out, const SchemeInfos& recorded) {
     // An ensemble's members go to ensemble.csv; the other files hold their means and intervals.
     if (const std::string members = ensemble_csv(all_runs); !members.empty()) dir.write("ensemble.csv", members);
     const std::vector<RunResult> results = collapse_ensembles(all_runs);
-    write_run_files(dir, results);
+    write_run_files(dir, results, recorded);
     const auto orders = observed_orders(results);
     dir.write("orders.csv", orders_csv(orders));
     dir.write("local_orders.csv", local_orders_csv(orders));
-    dir.write("report.md", markdown_report(describe(results), command_line, dir, report, all_cores()));
+    dir.write("report.md", markdown_report(describe(results, recorded), command_line, dir, report, all_cores()));
     out << fmt::format("wrote {} and {}\n", (dir.path() / "results.csv").string(), (dir.path() / "report.md").string());
 }
 

@@ -19,8 +19,8 @@ namespace rotbench {
 inline constexpr int max_jobs = 1024, max_series_samples = 1000000;
 
 // The files `rotbench run` writes whose names are known before it starts.
-inline const std::vector<std::string> run_files = {"runs.jsonl", "results.csv", "runs.csv", "orders.csv", "local_orders.csv", "answer.csv",
-                                                   "ensemble.csv", "report.md"};
+inline const std::vector<std::string> run_files = {"runs.jsonl", "schemes.json", "results.csv", "runs.csv", "orders.csv",
+                                                   "local_orders.csv", "answer.csv", "ensemble.csv", "report.md"};
 
 // The report's plots drawn on every core.
 ParallelWork all_cores();
@@ -34,8 +34,9 @@ std::vector<double> parse_tolerances(const std::vector<std::string>& texts);
 // holds a stability.csv.
 ReportOptions report_options(const std::vector<std::string>& tolerances, const std::filesystem::path& stability_dir);
 
-// results.csv, runs.csv, orders.csv, local_orders.csv, answer.csv and report.md.
+// results.csv, runs.csv, orders.csv, local_orders.csv, answer.csv and report.md; the schemes
+// not registered in this process described as `recorded` (earlier commands' schemes.json).
 void write_outputs(const OutputDir& dir, const std::vector<RunResult>& results, const std::string& command_line,
-                   const ReportOptions& report, std::ostream& out);
+                   const ReportOptions& report, std::ostream& out, const SchemeInfos& recorded = {});
 
 }  // namespace rotbench

@@ -22,7 +22,7 @@ public:
         const ReportOptions options = report_options(tolerances_, stability_.empty() ? dir_ : stability_);
         if (!stability_.empty() && options.stability.empty())
             throw InputError("--stability " + stability_ + ": no stability.csv there (rotbench stability --out writes one)");
-        const ResultSet set = describe(read_results(dir_));
+        const ResultSet set = describe(read_results(dir_), read_schemes(dir_));
         const OutputDir out = OutputDir::open(out_.empty() ? dir_ : out_, {"run", "", {"report.md", "answer.csv"}, overwrite_});
         if (out_.empty() || std::filesystem::equivalent(out_, dir_)) {
         } else if (std::filesystem::exists(std::filesystem::path(dir_) / "cost.csv")) {  // the cost table goes with the report

@@ -39,7 +39,7 @@ struct IsolationOptions {
 Executor make_executor(const Invocation& how, const OutputDir* dir, ExecOptions options);
 
 // A slice's files for `rotbench merge`: results.csv, runs.csv, the energy series, shard.csv.
-inline const std::vector<std::string> slice_files = {"runs.jsonl", "results.csv", "runs.csv", "shard.csv"};
+inline const std::vector<std::string> slice_files = {"runs.jsonl", "schemes.json", "results.csv", "runs.csv", "shard.csv"};
 void write_slice(const OutputDir& dir, const PlanSlice& slice, const std::vector<RunResult>& results, std::ostream& out);
 
 

@@ -30,7 +30,7 @@ std::int64_t step_count(double t_end, double dt) {
 
 namespace {
 constexpr RunKind all_kinds[] = {RunKind::trajectory,    RunKind::reversal, RunKind::stability, RunKind::horizon,
-                                 RunKind::amplification, RunKind::spectral, RunKind::states};
+                                 RunKind::amplification, RunKind::spectral, RunKind::states, RunKind::cost};
 }
 
 const char* kind_name(RunKind kind) {
@@ -42,6 +42,7 @@ const char* kind_name(RunKind kind) {
         case RunKind::amplification: return "amplification";
         case RunKind::spectral: return "spectral";
         case RunKind::states: return "states";
+        case RunKind::cost: return "cost";
     }
     return "?";
 }

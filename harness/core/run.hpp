@@ -23,8 +23,9 @@ namespace rotbench {
 //                  step map reach the stability criterion, and whether it is unstable at every dt;
 //   spectral       on such a scene: the spectral radius of its step map against dt (a series);
 //   states         its states at up to RunOptions::series_samples + 1 instants (a series: the
-//                  trajectory export).
-enum class RunKind { trajectory, reversal, stability, horizon, amplification, spectral, states };
+//                  trajectory export);
+//   cost           it and direct timed in turn on the same steps: the ratio of their costs.
+enum class RunKind { trajectory, reversal, stability, horizon, amplification, spectral, states, cost };
 inline constexpr double energy_horizon = 8.0;
 const char* kind_name(RunKind kind);
 RunKind kind_from_name(const std::string& name);  // InputError for an unknown one

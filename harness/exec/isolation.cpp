@@ -4,6 +4,7 @@
 
 #include "harness/exec/interrupt.hpp"
 #include "harness/exec/machine.hpp"
+#include "harness/exec/run_kinds.hpp"
 #include "harness/store/csv.hpp"
 #include "harness/store/output_files.hpp"
 #include "harness/store/plugin.hpp"
@@ -35,7 +36,10 @@ std::string& worker() {
 double default_timeout(const RunSpec& spec, const Scene& scene) {
     if (spec.kind == RunKind::stability || spec.kind == RunKind::amplification || spec.kind == RunKind::spectral) return 600.0;
     const double body_steps = static_cast<double>(step_count(scene.t_end(), spec.dt)) * static_cast<double>(scene.initial_state().size());
-    const double ways = spec.kind == RunKind::reversal ? 2.0 : spec.kind == RunKind::horizon ? 1.0 + energy_horizon : 1.0;
+    const double ways = spec.kind == RunKind::reversal  ? 2.0
+                        : spec.kind == RunKind::horizon ? 1.0 + energy_horizon
+                        : spec.kind == RunKind::cost    ? 2.0 * (cost_pairs + 1)
+                                                        : 1.0;
     return steps_timeout(body_steps * ways);
 }
 

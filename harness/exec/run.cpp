@@ -234,6 +234,7 @@ RunResult run_one(const RunSpec& requested, const RunOptions& options) {
             case RunKind::amplification: r = run_amplification(requested); break;
             case RunKind::spectral: r = run_spectral(requested); break;
             case RunKind::states: r = run_states(requested, options); break;
+            case RunKind::cost: r = run_cost(requested, registered_scheme(requested.scheme)); break;
         }
     } catch (const std::bad_alloc&) {  // what the run records (reference, series) outgrew memory: not the scheme's failure
         r = RunResult{requested, {}, {}};

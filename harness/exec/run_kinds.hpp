@@ -27,6 +27,13 @@ RunResult run_reversal(const RunSpec& spec);
 // and over energy_horizon x T (energy_drift_horizon), at dt; spec.t_end is T.
 RunResult run_horizon(const RunSpec& spec, const SchemeFactory& make);
 
+// The cost of the scheme against direct's on the same scene and dt: the two timed in turn on
+// one thread, cost_pairs times, over min(t_end / dt, timing_sample_steps) steps each. Metrics:
+// cost_ratio (the median of the pairs' ratios of CPU time) and its 95 % interval cost_ratio_lo,
+// cost_ratio_hi; ns_per_step (the scheme's median). timing_samples holds the ratios.
+inline constexpr int cost_pairs = 15;
+RunResult run_cost(const RunSpec& spec, const SchemeFactory& make);
+
 // The largest stable dt of the scheme on a stability scene, by bracketing and bisection
 // (harness/exec/stability.hpp). Metrics: dt_empirical, dt_peng, stability_ratio.
 RunResult run_stability_search(const RunSpec& spec);

@@ -5,6 +5,7 @@
 
 #include "harness/exec/run.hpp"
 #include "harness/gate/gate_file.hpp"
+#include "harness/store/scheme_record.hpp"
 
 #include <cstddef>
 #include <limits>
@@ -56,6 +57,8 @@ struct GateResult {
     std::vector<Verdict> verdicts;  // in the plan's order
     std::vector<RunResult> runs;
     std::vector<std::string> warnings;
+    std::string gate_file, gate_file_hash;  // the file that judged (GateFile::path, hash)
+    SchemeInfos schemes;                    // what each judged scheme is: a plug-in's path, hash and build
     bool passed() const;
     std::size_t count(const std::string& outcome) const;
 };

@@ -1,6 +1,8 @@
 #include "harness/gate/gate_file.hpp"
 
+#include "harness/core/fnv1a.hpp"
 #include "harness/core/metrics.hpp"
+#include "harness/store/output_files.hpp"
 #include "harness/store/toml_input.hpp"
 #include "harness/scenes/scene.hpp"
 #include "harness/scenes/stability_probe.hpp"
@@ -48,6 +50,7 @@ GateCheck read_check(const std::string& path, const toml::table& t, std::size_t 
     c.location = fmt::format("{}:{}", path, t.source().begin.line);
     std::string metric;
     const toml::node* schemes_node = nullptr;
+    const toml::node* except_node = nullptr;
     if (const toml::node* scene = t.get("scene")) {  // first: 'params' are checked against it
         c.scene = text(path, "scene", *scene);
         try {
@@ -62,6 +65,7 @@ GateCheck read_check(const std::string& path, const toml::table& t, std::size_t 
         else if (key == "why") c.why = text(path, key, v);
         else if (key == "scene") continue;
         else if (key == "schemes") schemes_node = &v;
+        else if (key == "except") except_node = &v;
         else if (key == "metric") {
             metric = text(path, key, v);
             if (std::find(known_metrics().begin(), known_metrics().end(), metric) == known_metrics().end())
@@ -86,7 +90,7 @@ GateCheck read_check(const std::string& path, const toml::table& t, std::size_t 
             if (b.size() != 1 || !std::isfinite(b[0])) toml_error(path, v, "'" + key + "' must be one finite number");
             c.bound = b[0];
         } else {
-            toml_error(path, v, "unknown key '" + key + "' in [[check]]; valid keys: name, scene, schemes, metric, dt, t_end, "
+            toml_error(path, v, "unknown key '" + key + "' in [[check]]; valid keys: name, scene, schemes, except, metric, dt, t_end, "
                           "round_off, params, why, " + join(criteria, ", "));
         }
     }
@@ -102,6 +106,11 @@ GateCheck read_check(const std::string& path, const toml::table& t, std::size_t 
     const auto names = strings(path, "schemes", *schemes_node);
     if (names.size() == 1 && names[0] == "*") c.schemes = sound_schemes();
     else c.schemes = ids(path, "schemes", *schemes_node, SchemeRegistry::instance(), "scheme");
+    if (except_node) {  // "*" but these: a check that covers plug-ins yet leaves out a scheme held to another bound
+        if (!(names.size() == 1 && names[0] == "*")) toml_error(path, *except_node, "'except' applies to schemes = [\"*\"] only");
+        for (const auto& id : ids(path, "except", *except_node, SchemeRegistry::instance(), "scheme"))
+            std::erase(c.schemes, id);
+    }
     const bool ladder = c.criterion == "min_order";
     if (c.criterion == "min_stability") {
         if (!c.dts.empty()) toml_error(path, t, "min_stability searches for the limit itself: remove 'dt'");
@@ -236,8 +245,15 @@ const std::vector<std::string>& claim_ids() {
     return ids;
 }
 
-GateFile load_gate(const std::string& path) { return gate_from_toml(parse_toml_file(path), path); }
+GateFile load_gate(const std::string& path) {
+    const std::string text = read_input_file(path, "", 1u << 20);  // as parse_toml_file bounds it
+    return parse_gate(text, path);
+}
 
-GateFile parse_gate(std::string_view text, const std::string& name) { return gate_from_toml(parse_toml_text(text, name), name); }
+GateFile parse_gate(std::string_view text, const std::string& name) {
+    GateFile file = gate_from_toml(parse_toml_text(text, name), name);
+    file.hash = Fnv1a().feed(text).hex();
+    return file;
+}
 
 }  // namespace rotbench

@@ -3,6 +3,7 @@
 // is stated in the message with where it comes from.
 #include "harness/analysis/claims.hpp"
 #include "harness/gate/gate.hpp"
+#include "harness/store/plugin.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -50,7 +51,11 @@ void judge_check(Verdict& v, const GateCheck& c, const Runs& runs) {
     if (c.criterion == "min_stability") {
         take(v, judge_stability_margin(r, c.bound), name);
     } else if (c.criterion == "max_cost_ratio") {
-        take(v, judge_cost_ratio(r, *runs[1], c.bound), name);
+        take(v, judge_cost_ratio(r, c.bound), name);
+        if (const LoadedPlugin* p = plugin_of(r.spec.scheme); p && !p->built_like_builtins()) {
+            v.passed = false;  // whatever it measured: an unoptimised build says nothing of the scheme's cost
+            v.message = name + ": not judged: " + build_warning(*p) + " (measured: " + judge_cost_ratio(r, c.bound).message + ")";
+        }
     } else {
         v.measured = r.value(c.metric);
         if (std::isnan(v.measured)) {
@@ -81,6 +86,10 @@ std::size_t GateResult::count(const std::string& outcome) const {
 GateResult judge_gate(const GateFile& file, const GatePlan& plan, std::vector<RunResult> runs) {
     GateResult result;
     result.warnings = plan.warnings;
+    result.gate_file = file.path, result.gate_file_hash = file.hash;
+    std::vector<std::string> judged;
+    for (const GateCase& c : plan.cases) judged.push_back(c.scheme);
+    result.schemes = describe_schemes(judged, {});
     for (const GateCase& c : plan.cases) {
         Verdict v;
         v.of = c;

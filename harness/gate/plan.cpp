@@ -4,15 +4,27 @@
 
 #include "harness/scenes/scene.hpp"
 #include "harness/store/client.hpp"
+#include "harness/store/plugin.hpp"
 #include "schemes/scheme.hpp"
 
 #include <algorithm>
+#include <filesystem>
 #include <fmt/format.h>
 #include <map>
 #include <tuple>
 
 namespace rotbench {
 namespace {
+
+// file:line with the file relative to the working directory when it lies below it: CI annotations
+// name files relative to the checkout, where CI runs.
+std::string workspace_relative(const std::string& location) {
+    const auto colon = location.rfind(':');
+    const std::filesystem::path file = location.substr(0, colon);
+    const std::filesystem::path relative = file.lexically_relative(std::filesystem::current_path());
+    if (file.is_relative() || relative.empty() || *relative.begin() == "..") return location;
+    return relative.string() + location.substr(colon);
+}
 
 class Planner {
 public:
@@ -50,8 +62,10 @@ public:
         if (!section.present) return;
         for (const auto& scheme : section.schemes) {
             const SchemeClaims& c = SchemeRegistry::instance().at(scheme, "scheme").extra;
+            // A plug-in's claim points at its registration, in the candidate's source; a built-in's at the gate file.
+            const std::string location = plugin_of(scheme) && !c.declared_at.empty() ? workspace_relative(c.declared_at) : section.location;
             const auto claim = [&](const std::string& id, const std::string& scene, std::vector<std::size_t> runs, int order = 0) {
-                add({id, "claim", id, scene, scheme, std::move(runs), std::numeric_limits<std::size_t>::max(), order, section.location});
+                add({id, "claim", id, scene, scheme, std::move(runs), std::numeric_limits<std::size_t>::max(), order, location});
             };
             if (c.claims_nothing()) {
                 if (c.sound)
@@ -104,8 +118,7 @@ public:
                 } else if (c.criterion == "min_stability") {
                     runs = {run({c.scene, scheme, 0.0, c.t_end, c.params, RunKind::stability, false})};
                 } else if (c.criterion == "max_cost_ratio") {
-                    runs = {run({c.scene, scheme, c.dts[0], c.t_end, c.params, RunKind::trajectory, true}),
-                            run({c.scene, "direct", c.dts[0], c.t_end, c.params, RunKind::trajectory, true})};
+                    runs = {run({c.scene, scheme, c.dts[0], c.t_end, c.params, RunKind::cost, true})};
                 } else {
                     runs = {run({c.scene, scheme, c.dts[0], c.t_end, c.params, RunKind::trajectory, false})};
                 }
@@ -150,7 +163,10 @@ GatePlan plan_gate(const GateFile& file) {
     Planner planner(file);
     planner.claims();
     planner.checks();
-    return planner.take();
+    GatePlan plan = planner.take();
+    for (const auto& p : loaded_plugins())
+        if (const std::string w = build_warning(p); !w.empty()) plan.warnings.push_back(w);
+    return plan;
 }
 
 }  // namespace rotbench

@@ -230,8 +230,12 @@ void check_distinct_outputs(const std::vector<std::pair<std::string, fs::path>>&
 void check_output_file(const fs::path& file, const std::string& option, bool overwrite, const std::string& signature) {
     std::error_code ec;
     const fs::path parent = file.parent_path();
+    if (!parent.empty() && !fs::exists(fs::symlink_status(parent, ec))) {  // made as --out makes its folder
+        fs::create_directories(parent, ec);
+        if (ec) throw InputError(option + " " + file.string() + ": cannot create the directory " + parent.string() + ": " + ec.message());
+    }
     if (!parent.empty() && !fs::is_directory(parent, ec))
-        throw InputError(option + " " + file.string() + ": the directory " + parent.string() + " does not exist");
+        throw InputError(option + " " + file.string() + ": " + parent.string() + " is not a directory");
     if (fs::exists(file, ec)) {
         if (!fs::is_regular_file(file, ec)) throw InputError(option + " " + file.string() + ": not a regular file");
         if (!overwrite) throw InputError(option + " " + file.string() + " exists; pass --overwrite to replace it");

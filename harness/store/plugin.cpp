@@ -34,6 +34,16 @@ const LoadedPlugin* plugin_of(const std::string& scheme) {
     return nullptr;
 }
 
+// This file is compiled with the built-in schemes' flags: the macro says how they were built.
+bool LoadedPlugin::built_like_builtins() const { return build == ROTBENCH_PLUGIN_BUILD; }
+
+std::string build_warning(const LoadedPlugin& p) {
+    if (p.built_like_builtins()) return "";
+    return fmt::format("plug-in {} was built {} (the built-in schemes: {}): its cost does not compare with theirs; build it "
+                       "with rotbench_add_scheme() and its default flags",
+                       p.path, p.build, ROTBENCH_PLUGIN_BUILD);
+}
+
 std::vector<std::string> load_plugin(const std::string& path) {
     const std::string where = "--plugin " + path;
     if (!std::filesystem::exists(path)) throw InputError(where + ": no such file");
@@ -50,6 +60,7 @@ std::vector<std::string> load_plugin(const std::string& path) {
     if (!handle) throw InputError(where + ": cannot load: " + dlerror());
     const auto abi = reinterpret_cast<rotbench_plugin_abi_fn>(dlsym(handle, "rotbench_plugin_abi"));
     const auto schemes = reinterpret_cast<rotbench_plugin_schemes_fn>(dlsym(handle, "rotbench_plugin_schemes"));
+    const auto build = reinterpret_cast<rotbench_plugin_build_fn>(dlsym(handle, "rotbench_plugin_build"));
     if (!abi || !schemes) {
         dlclose(handle);
         throw InputError(where + ": not a rotbench plug-in (no rotbench_plugin_abi / rotbench_plugin_schemes); build it "
@@ -61,6 +72,10 @@ std::vector<std::string> load_plugin(const std::string& path) {
         throw InputError(where + ": ABI mismatch: the plug-in was built for '" + theirs + "', this rotbench is '" +
                          ROTBENCH_PLUGIN_ABI + "'; rebuild the plug-in against this rotbench");
     }
+    if (!build) {  // the same ABI string, yet an entry point missing: not built by rotbench_add_scheme()
+        dlclose(handle);
+        throw InputError(where + ": no rotbench_plugin_build; build it with rotbench_add_scheme() from find_package(rotbench)");
+    }
     const SchemeRegistry& theirs = *schemes();
     const auto ids = theirs.ids();
     if (ids.empty()) throw InputError(where + ": the plug-in registers no scheme");
@@ -71,7 +86,7 @@ std::vector<std::string> load_plugin(const std::string& path) {
             throw InputError(where + ": scheme '" + id + "' is already registered; give the plug-in's scheme another id");
     }
     for (const auto& id : ids) ours.add(theirs.at(id, "scheme"));
-    plugins().push_back({absolute, hash, ids});
+    plugins().push_back({absolute, hash, ids, build()});
     return ids;  // the handle is kept open: the factories live in the library
 }
 

@@ -20,9 +20,14 @@ struct LoadedPlugin {
     std::string path;  // absolute
     std::string hash;  // FNV-1a of the file's bytes, hex: a plug-in rebuilt since is another one
     std::vector<std::string> schemes;
+    std::string build;  // e.g. "optimised, assertions off" (ROTBENCH_PLUGIN_BUILD, schemes/plugin_abi.hpp)
+    // Built as the built-in schemes of this rotbench are: its cost compares with theirs.
+    bool built_like_builtins() const;
 };
 const std::vector<LoadedPlugin>& loaded_plugins();
 // The plug-in a scheme came from, or nullptr for a built-in one.
 const LoadedPlugin* plugin_of(const std::string& scheme);
+// One line for a plug-in built otherwise than the built-in schemes, or "" for one built like them.
+std::string build_warning(const LoadedPlugin& plugin);
 
 }  // namespace rotbench

@@ -4,6 +4,7 @@
 
 #include "harness/core/run.hpp"
 #include "harness/store/output_dir.hpp"
+#include "harness/store/scheme_record.hpp"
 
 #include <filesystem>
 #include <map>
@@ -24,8 +25,9 @@ std::string runs_csv(const std::vector<RunResult>& results);
 // runs.jsonl, the run store of an output folder: one record per run (harness/store/run_record.hpp),
 // indexed from 0 in the order of results.csv and runs.csv, which are exports of it.
 std::string run_store(const std::vector<RunResult>& runs);
-// Writes runs.jsonl, results.csv and runs.csv of the runs.
-void write_run_files(const OutputDir& dir, const std::vector<RunResult>& runs);
+// Writes runs.jsonl, results.csv and runs.csv of the runs, and schemes.json: their schemes as
+// registered in this process, else as `recorded` (harness/store/scheme_record.hpp).
+void write_run_files(const OutputDir& dir, const std::vector<RunResult>& runs, const SchemeInfos& recorded = {});
 
 // Reads a folder's runs back from its store, as they were made. InputError when the store is
 // missing, cut, or not rotbench's (an id that is not one, a step out of range); `name` stands

@@ -66,6 +66,11 @@ std::vector<RunResult> merge_shards(const std::vector<std::filesystem::path>& di
     std::map<std::size_t, RunResult> merged;  // by plan index; never sized by a number read from a file
     for (const auto& dir : dirs) {
         const std::string name = (dir / "shard.csv").string();
+        if (!std::filesystem::exists(std::filesystem::symlink_status(dir / "shard.csv")) &&
+            std::filesystem::exists(std::filesystem::symlink_status(dir / "runs.jsonl")))
+            throw InputError(dir.string() + " is a whole run, not a slice of `rotbench run --shard K/N`: merge joins the slices of "
+                             "one sharded command. To add schemes to a run, run it again with all of them (--schemes A,B) into a "
+                             "new --out; to set two runs side by side, `rotbench compare BASE NOW`");
         const auto rows = read_csv(dir / "shard.csv", "plan_id,shard,shards,plan_size,plan_index,scene,scheme,dt");
         const auto results = read_results(dir);
         if (rows.size() != results.size())
