@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 namespace rotbench {
 namespace {
@@ -36,8 +37,8 @@ Outcome advise_one(Executor& executor, const StabilityProbe& probe, const ParamO
     if (!(limit > 0)) return {false, o.r, "no stable dt found"};
     const double dt0 = advice_safety * (std::isfinite(limit) ? limit : probe.predicted_limit());
 
-    const auto run_at = [&](double dt, bool timed) {
-        RunSpec spec{scene_id, scheme, dt, t_end, params};
+    const auto run_at = [&](double dt, bool timed, const std::string& by = "") {
+        RunSpec spec{scene_id, by.empty() ? scheme : by, dt, t_end, params};
         spec.timed = timed;
         return executor.run(spec);
     };
@@ -102,6 +103,15 @@ Outcome advise_one(Executor& executor, const StabilityProbe& probe, const ParamO
     if (t_end / dt > advice_max_steps)
         return {false, o.r, fmt::format("needs dt = {:.3g} s, {:.3g} steps over {:g} s", dt, t_end / dt, t_end)};
     o.r.dt = dt;
+    o.r.stability_ratio = limit / probe.predicted_limit();
+    for (const auto& r : ladder) o.r.ladder.push_back({r.spec.dt, stable(r) ? relative_error(r) : NAN});
+    if (const OrderFit fit = fit_order(points); fit.sufficient) o.r.order = fit.order, o.r.order_lo = fit.order_lo, o.r.order_hi = fit.order_hi;
+    // The part of the error that is not the rotation scheme's: the exact rotation flow at the same dt.
+    if (const RunResult exact = run_at(dt, false, advice_exact_rotation); stable(exact)) {
+        o.r.exact_rotation_error = relative_error(exact);
+        o.r.contact_share = o.r.exact_rotation_error / o.r.predicted_error;
+    }
+    o.r.limited_by = o.r.how == "stability-bound" ? "stability" : o.r.contact_share >= advice_contact_share ? "contact" : "rotation";
     o.r.ns_per_step = median(ns);
     o.r.cpu_seconds = o.r.ns_per_step * 1e-9 / dt;
     if (verify) {
@@ -112,6 +122,35 @@ Outcome advise_one(Executor& executor, const StabilityProbe& probe, const ParamO
     }
     o.recommended = true;
     return o;
+}
+
+// What limits dt across the recommendations, one sentence per cause, and so what the ranking rests on.
+std::string advice_verdict(const Advice& a) {
+    const auto& rs = a.recommendations;
+    if (rs.empty()) return fmt::format("No scheme meets {:g} within the budget of a run.", a.tolerance);
+    std::string out;
+    for (const std::string cause : {"contact", "rotation", "stability"}) {
+        std::vector<std::string> ids;
+        double lo = INFINITY, hi = 0;
+        for (const auto& r : rs)
+            if (r.limited_by == cause) ids.push_back(r.scheme), lo = std::min(lo, r.dt), hi = std::max(hi, r.dt);
+        if (ids.empty()) continue;
+        const std::string who = ids.size() == rs.size() ? "every scheme" : fmt::format("{} ({} of {})", fmt::join(ids, ", "), ids.size(), rs.size());
+        const std::string dts = fmt::format("{:.2g} to {:.2g} s, {:.2g} to {:.2g} times Peng's step", lo, hi, lo / a.dt_peng, hi / a.dt_peng);
+        if (cause == "contact")
+            out += fmt::format("The contact, not the rotation scheme, limits dt for {}: stepped with the exact rotation flow ({}) the "
+                               "error at the same dt is at least {:.0f} % of theirs, so they need the same dt ({}) and differ only in "
+                               "cost, which ranks them, and in stability margin. ",
+                               who, advice_exact_rotation, 100 * advice_contact_share, dts);
+        else if (cause == "rotation")
+            out += fmt::format("For {} the rotation scheme's own error adds to the contact's and sets dt ({}): there the scheme's "
+                               "order and error constant matter, weighed against its cost per step. ", who, dts);
+        else
+            out += fmt::format("For {} stability sets dt: {:g} is met at 0.9 of the scheme's own stability limit ({}). ", who,
+                               a.tolerance, dts);
+    }
+    out.pop_back();
+    return out;
 }
 
 }  // namespace
@@ -164,6 +203,7 @@ Advice advise(Executor& executor, const Particle& particle, double tolerance, co
     }
     std::stable_sort(a.recommendations.begin(), a.recommendations.end(),
                      [](const Recommendation& x, const Recommendation& y) { return x.cpu_seconds < y.cpu_seconds; });
+    a.verdict = advice_verdict(a);
     return a;
 }
 

@@ -37,9 +37,28 @@ inline constexpr double advice_default_periods = 20;  // t_end by default, in pe
 inline constexpr double advice_max_steps = 2e6;  // a dt needing more steps over t_end is not recommended (its
                                                  // reference would take ~0.4 GB, and its run seconds)
 
+// The error the rotation scheme is not responsible for: the same scene at the same dt stepped by
+// this scheme, whose rotation between the torque kicks is the exact free-body flow. When it is
+// at least this fraction of a scheme's error, the contact and the translation, not the rotation
+// scheme, make the error at that dt.
+inline const std::string advice_exact_rotation = "exact_splitting";
+inline constexpr double advice_contact_share = 0.9;
+
+struct Rung {
+    double dt = 0, error = 0;  // s; relative angular-velocity error (NaN: unstable or failed)
+};
+
 struct Recommendation {
     std::string scheme;
     double dt = 0, dt_stability = 0;  // s
+    double stability_ratio = 0;       // dt_stability over Peng's prediction
+    std::vector<Rung> ladder;         // every rung run, coarse to fine
+    double order = std::numeric_limits<double>::quiet_NaN(), order_lo = order, order_hi = order;  // observed on the ladder
+    // The error at dt of advice_exact_rotation, and its share of this scheme's predicted error.
+    double exact_rotation_error = std::numeric_limits<double>::quiet_NaN(), contact_share = exact_rotation_error;
+    // What sets dt: "stability" (the first rung already meets the tolerance), "contact" (the
+    // exact rotation flow errs as much at dt) or "rotation" (the rotation scheme's own error).
+    std::string limited_by;
     double predicted_error = 0;       // relative angular-velocity error at dt, from the ladder
     std::string how;                  // "stability-bound" or "interpolated" between two measured rungs
     double ns_per_step = 0;           // median over the ladder's runs
@@ -55,6 +74,8 @@ struct Advice {
     ParamOverrides params;                      // of particle_contact
     std::vector<Recommendation> recommendations;  // best (least CPU time per simulated second) first
     std::vector<std::pair<std::string, std::string>> not_recommended;  // scheme, why
+    // One sentence on what limits dt across the recommendations, and what they are ranked on.
+    std::string verdict;
 };
 
 // The scene's parameters for the particle (InputError, one line, for a particle that is not
