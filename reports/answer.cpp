@@ -105,7 +105,11 @@ std::string answer_section(const ResultSet& set, const std::vector<LargestDt>& a
         }
         md += "\n";
     }
-    md += "<details><summary>Every scene</summary>\n\n";
+    return md + "Every scene's answer: section " + answer_details_heading + ", after the scenes.\n\n";
+}
+
+std::string answer_details_section(const std::vector<LargestDt>& answers, const std::vector<double>& tolerances) {
+    std::string md = "## " + answer_details_heading + "\n\n<details><summary>Every scene</summary>\n\n";
     for (const double tol : tolerances) {
         std::vector<std::string> all;
         for (const auto& a : answers)

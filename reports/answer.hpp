@@ -12,7 +12,9 @@ namespace rotbench {
 std::string answer_csv(const std::vector<LargestDt>& answers);
 
 // Markdown: the first screen's table (the two ranking scenes, ranked by the geometric mean of
-// their CPU times), then every scene in a collapsed section.
+// their CPU times); and, further down the report, every scene in a collapsed section.
 std::string answer_section(const ResultSet& set, const std::vector<LargestDt>& answers, const std::vector<double>& tolerances);
+inline const std::string answer_details_heading = "The answer on every scene";
+std::string answer_details_section(const std::vector<LargestDt>& answers, const std::vector<double>& tolerances);
 
 }  // namespace rotbench

@@ -245,16 +245,18 @@ std::string markdown_report(const ResultSet& set, const std::string& command_lin
                               "compare with theirs. Rebuild it with `rotbench_add_scheme()` and its default flags.\n\n",
                               id, info.plugin_build, info.plugin_path, ROTBENCH_PLUGIN_BUILD);
 
+    const auto verdicts = scheme_verdicts(set, orders, options.stability);
+    md += recommendation_section(recommend(verdicts, options.stability), verdicts);
     const std::string answer_heading = "The answer: the largest dt for a tolerance";
     md += "## Contents\n\n- " + link("Verdicts", "Verdicts") + " · " + link("The answer", answer_heading) + " · " +
           link("Stability limits", "Stability limits") + " · " + link("Cost", cost_heading) + "\n- Scenes:";
     for (std::size_t i = 0; i < scenes.size(); ++i)
         md += (i ? "," : "") + std::string(" ") + link("`" + scenes[i] + "`", "Scene `" + scenes[i] + "`");
-    md += "\n- " + link("Seed Table 1", "Seed Table 1 reproduced") + " · " + link("Energy against time", "Energy against time") +
+    md += "\n- " + link(answer_details_heading, answer_details_heading) + " · " + link("Seed Table 1", "Seed Table 1 reproduced") + " · " + link("Energy against time", "Energy against time") +
           " · " + link("Schemes", "Schemes: sources, readings, and what each claims") + " · " +
           link("Metrics and the order fit", "Metrics and the order fit") + "\n\n";
 
-    md += verdict_section(set, orders, options.stability);
+    md += verdict_section(set, verdicts, !options.stability.empty());
     md += clients_section(set);
     md += answer_section(set, answers, options.tolerances);
     md += stability_summary(options.stability, set, dir);
@@ -282,6 +284,7 @@ std::string markdown_report(const ResultSet& set, const std::string& command_lin
         scene_section(sections[i], set.scene(scenes[i]), set, orders, dir, best_on(scenes[i]), expected);
     });
     for (const auto& section : sections) md += section;
+    md += answer_details_section(answers, options.tolerances);
     table1_section(md, results);
     md += granular_section(set, dir);
     md += energy_series_section(set, dir, parallel);

@@ -182,7 +182,11 @@ TEST_CASE("claims: a horizon run that failed is no energy verdict, and the table
     failed.metrics.clear();
     std::vector<RunResult> runs = {run(0.01, {{metric::energy_drift_max, 1e-6}, {metric::steps, 1000}}, RunKind::trajectory, 10.0), failed};
     for (auto& r : runs) r.spec.scene = "dipole_top";
-    const std::string table = verdict_section(describe(runs), {}, {});
+    const ResultSet set = describe(runs);
+    const auto verdicts = scheme_verdicts(set, {}, {});
+    REQUIRE(verdicts.size() == 1);
+    CHECK(verdicts[0].energy == EnergyVerdict::not_judged);
+    const std::string table = verdict_section(set, verdicts, false);
     INFO(table);
     CHECK(table.find("| not judged; failed over 8 T on dipole_top |") != std::string::npos);
 }
@@ -195,7 +199,9 @@ TEST_CASE("claims: the report's energy verdict is the gate's judgement of the sa
         const ResultSet set = describe(runs);
         REQUIRE(set.horizons.size() == 1);
         const bool passed = judge_bounded_energy(set.horizons.front()).passed;
-        const std::string table = verdict_section(set, {}, {});
+        const auto verdicts = scheme_verdicts(set, {}, {});
+        CHECK(verdicts.at(0).energy == (passed ? EnergyVerdict::bounded : EnergyVerdict::drifting));
+        const std::string table = verdict_section(set, verdicts, false);
         INFO("growth t^" << a << "\n" << table);
         CHECK(passed == (a < 0.5));
         CHECK((table.find(passed ? "| bounded (" : "| drifting (") != std::string::npos));

@@ -121,7 +121,7 @@ TEST_CASE("run --shard K/N and merge give the outputs of the unsharded run, timi
     CHECK_THAT(foreign.err, Catch::Contains("a slice of another sweep"));
     const Cli not_a_shard = cli({"merge", (dir / "full").string(), "--out", (dir / "m2").string()});
     CHECK(not_a_shard.status == 2);
-    CHECK_THAT(not_a_shard.err, Catch::Contains("shard.csv"));
+    CHECK_THAT(not_a_shard.err, Catch::Contains("is a whole run, not a slice"));
     for (const char* bad : {"0/2", "3/2", "1/0", "a/b", "2", "1/2/3", "-1/2"}) {
         const Cli r = cli({"run", "--scenes", "asymmetric_free", "--quick", "--shard", bad, "--out", (dir / "bad").string()});
         INFO(bad);

@@ -43,16 +43,17 @@ std::vector<std::string> lines(const std::string& text) {
 
 // One test case, its parts as sections: the run they read is made once per process.
 TEST_CASE("the report of a quick run with its stability study") {
-    SECTION("the report opens with a paragraph, the contents, the verdicts and the answer") {
+    SECTION("the report opens with a paragraph, the recommendation, the contents, the verdicts and the answer") {
         const auto md = lines(read(report_dir() / "report.md"));
         std::vector<std::string> headings;
         for (const auto& l : md)
             if (l.rfind("## ", 0) == 0) headings.push_back(l);
-        REQUIRE(headings.size() >= 4);
-        CHECK(headings[0] == "## Contents");
-        CHECK(headings[1] == "## Verdicts");
-        CHECK(headings[2] == "## The answer: the largest dt for a tolerance");
-        CHECK(headings[3] == "## Stability limits");
+        REQUIRE(headings.size() >= 5);
+        CHECK(headings[0] == "## Recommendation");
+        CHECK(headings[1] == "## Contents");
+        CHECK(headings[2] == "## Verdicts");
+        CHECK(headings[3] == "## The answer: the largest dt for a tolerance");
+        CHECK(headings[4] == "## Stability limits");
         CHECK(md[2].find("runs of 5 schemes on 3 scenes") != std::string::npos);  // the one-paragraph header
         const std::string text = read(report_dir() / "report.md");
         CHECK_THAT(text, Catch::Contains("### Relative error 0.001"));
@@ -64,6 +65,17 @@ TEST_CASE("the report of a quick run with its stability study") {
         // The stability study merged from the directory: sphere_pair's table, Peng's dt first.
         CHECK_THAT(text, Catch::Contains("### `sphere_pair`\n\n| scheme | zeta = 0 | zeta = 0.3 |"));
         CHECK_THAT(text, Catch::Contains("| *Peng's dt (s)* |"));
+    }
+    SECTION("the recommendation names the schemes to use and to avoid, with why, from the verdicts") {
+        const std::string text = read(report_dir() / "report.md");
+        // Of the five: fincham is second order and keeps momentum but its energy drifts; direct and zvw
+        // are first order under torque; no_gyro is the control. exact_splitting keeps energy bounded.
+        CHECK_THAT(text, Catch::Contains("- **Use** `exact_splitting` ("));
+        CHECK_THAT(text, Catch::Contains("- **For short runs** `fincham` ("));
+        CHECK_THAT(text, Catch::Contains("`direct` (order 1 under an orientation-dependent torque"));
+        CHECK_THAT(text, Catch::Contains("`no_gyro` (a deliberately wrong control)"));
+        CHECK_THAT(text, Catch::Contains("- **Peng's step is unsafe once contacts are damped**, for every scheme: at ζ = 0.3 the best limit is"));
+        CHECK_THAT(text, Catch::Contains("`rotbench advise --inertia"));
     }
     SECTION("a scheme that does not converge shows how far from converged it stays") {
         // no_gyro on asymmetric_free: the verdict gives omega_err_max / omega_ref_max at its finest

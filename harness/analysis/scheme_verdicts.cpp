@@ -1,0 +1,202 @@
+#include "harness/analysis/scheme_verdicts.hpp"
+
+#include "harness/analysis/claims.hpp"
+#include "harness/analysis/median.hpp"
+#include "harness/analysis/round_off.hpp"
+
+#include <algorithm>
+#include <fmt/format.h>
+#include <map>
+
+namespace rotbench {
+namespace {
+
+bool judged_scene(const SceneInfo& s, bool with_torque) { return with_torque ? judged_with_torque(s) : judged_without_torque(s); }
+
+// omega_err_max over |w_ref| at the scheme's finest stable step on a scene: near 1 when the
+// error has saturated, near round-off when it is round-off that does not converge.
+double finest_relative_error(const ResultSet& set, const std::string& scene, const std::string& scheme) {
+    const RunResult* finest = nullptr;
+    for (const auto& r : set.runs)
+        if (r.spec.scene == scene && r.spec.scheme == scheme && std::isfinite(r.value(metric::omega_err_max)) &&
+            (!finest || r.spec.dt < finest->spec.dt))
+            finest = &r;
+    return finest ? finest->value(metric::omega_err_max) / finest->value(metric::omega_ref_max) : NAN;
+}
+
+OrderVerdict order_verdict(const ResultSet& set, const std::vector<OrderRow>& orders, const std::string& scheme, bool with_torque) {
+    OrderVerdict v;
+    if (const SchemeInfo* info = set.scheme(scheme)) {
+        v.claimed_order = with_torque ? info->claims.with_torque.order : info->claims.without_torque.order;
+        if (!with_torque && info->claims.exact_without_torque) v.claimed = "exact";
+        else if (v.claimed_order > 0) v.claimed = std::to_string(v.claimed_order);
+    }
+    for (const auto& o : orders) {
+        if (o.scheme != scheme || o.metric != metric::omega_err_max || !judged_scene(set.scene(o.scene), with_torque)) continue;
+        switch (o.status) {
+            case OrderStatus::fit:
+                ++v.fitted;
+                v.lo = std::isnan(v.lo) ? o.fit.order : std::min(v.lo, o.fit.order);
+                v.hi = std::isnan(v.hi) ? o.fit.order : std::max(v.hi, o.fit.order);
+                break;
+            case OrderStatus::exact: ++v.exact; break;
+            case OrderStatus::insufficient: ++v.insufficient; break;
+            case OrderStatus::no_convergence: {
+                ++v.no_convergence;
+                const double e = finest_relative_error(set, o.scene, scheme);
+                v.stuck_lo = std::isnan(v.stuck_lo) ? e : std::min(v.stuck_lo, e);
+                v.stuck_hi = std::isnan(v.stuck_hi) ? e : std::max(v.stuck_hi, e);
+                break;
+            }
+        }
+    }
+    return v;
+}
+
+// The claims module's momentum judge over every torque-free run.
+void momentum_verdict(const ResultSet& set, SchemeVerdict& v) {
+    RunRefs runs;
+    for (const auto& r : set.runs)
+        if (r.spec.scheme == v.scheme && r.failure.empty() && judged_scene(set.scene(r.spec.scene), false) &&
+            std::isfinite(r.value(metric::momentum_drift_max)))
+            runs.push_back(&r), v.momentum_worst = std::max(v.momentum_worst, r.value(metric::momentum_drift_max));
+    v.momentum_runs = static_cast<int>(runs.size());
+    v.momentum_kept = !runs.empty() && judge_momentum(runs).passed;
+}
+
+// Per scene whose energy the claims are judged on: kept when every run's energy error is
+// round-off; else the claims module's bounded-energy judge on the scene's horizon run.
+void energy_verdict(const ResultSet& set, SchemeVerdict& v) {
+    std::map<std::string, std::vector<const RunResult*>> by_scene;
+    for (const auto& r : set.runs)
+        if (r.spec.scheme == v.scheme && r.failure.empty() && judges_energy(set.scene(r.spec.scene)) &&
+            std::isfinite(r.value(metric::energy_drift_max)))
+            by_scene[r.spec.scene].push_back(&r);
+    if (by_scene.empty()) return;
+    bool kept = true, drifting = false, judged = false;
+    for (const auto& [scene, runs] : by_scene) {
+        if (std::all_of(runs.begin(), runs.end(), [](const RunResult* r) {
+                return r->value(metric::energy_drift_max) <= round_off_bound(*r, metric::energy_drift_max);
+            }))
+            continue;
+        kept = false;
+        for (const auto& h : set.horizons) {
+            if (h.spec.scene != scene || h.spec.scheme != v.scheme) continue;
+            judged = true;
+            const Judgement j = judge_bounded_energy(h);
+            if (!h.failure.empty()) v.energy_failed += (v.energy_failed.empty() ? "" : ", ") + scene;
+            else if (j.passed) v.energy_bounded_max = std::max(v.energy_bounded_max, h.value(metric::energy_drift_horizon));
+            else drifting = true, v.energy_growth = std::max(v.energy_growth, j.measured);
+        }
+    }
+    v.energy = kept       ? EnergyVerdict::kept
+               : !judged  ? EnergyVerdict::none
+               : drifting ? EnergyVerdict::drifting
+               : !v.energy_failed.empty() ? EnergyVerdict::not_judged
+                                          : EnergyVerdict::bounded;
+}
+
+void stability_verdict(const std::vector<StabilityRow>& stability, SchemeVerdict& v) {
+    for (const auto& s : stability) {
+        if (s.scheme != v.scheme || s.omega_max != 0) continue;
+        const std::string where = fmt::format("{} ζ = {:g}", s.scene, s.zeta);
+        if (!s.failure.empty()) {
+            v.stability_failed += (v.stability_failed.empty() ? "" : ", ") + where;
+            continue;
+        }
+        const double ratio = s.dt_empirical / s.dt_peng;
+        v.stability_lo = std::isnan(v.stability_lo) ? ratio : std::min(v.stability_lo, ratio);
+        v.stability_hi = std::isnan(v.stability_hi) ? ratio : std::max(v.stability_hi, ratio);
+        if (stability_kind(s) == "weak") v.stability_weak += (v.stability_weak.empty() ? "" : ", ") + where;
+    }
+}
+
+}  // namespace
+
+bool OrderVerdict::at_least(int order) const {
+    return scenes() > 0 && fitted + exact == scenes() && (fitted == 0 || lo >= order - order_tolerance);
+}
+
+std::string cost_scene(const ResultSet& set) {
+    if (set.scenes.count("asymmetric_free")) return "asymmetric_free";
+    for (const auto& r : set.runs)
+        if (set.scene(r.spec.scene).bodies == 1) return r.spec.scene;
+    return set.runs.empty() ? "" : set.runs.front().spec.scene;
+}
+
+std::vector<SchemeVerdict> scheme_verdicts(const ResultSet& set, const std::vector<OrderRow>& orders,
+                                           const std::vector<StabilityRow>& stability) {
+    const std::string cost_on = cost_scene(set);
+    std::vector<SchemeVerdict> out;
+    for (const auto& r : set.runs) {
+        if (std::any_of(out.begin(), out.end(), [&](const SchemeVerdict& v) { return v.scheme == r.spec.scheme; })) continue;
+        SchemeVerdict v;
+        v.scheme = r.spec.scheme;
+        const SchemeInfo* info = set.scheme(v.scheme);
+        v.control = info && !info->claims.sound;
+        v.free = order_verdict(set, orders, v.scheme, false);
+        v.torque = order_verdict(set, orders, v.scheme, true);
+        momentum_verdict(set, v);
+        energy_verdict(set, v);
+        stability_verdict(stability, v);
+        std::vector<double> ns;
+        for (const auto& run : set.runs)
+            if (run.spec.scheme == v.scheme && run.spec.scene == cost_on && std::isfinite(run.value(metric::ns_per_step)))
+                ns.push_back(run.value(metric::ns_per_step));
+        v.ns_per_step = median(ns);
+        out.push_back(std::move(v));
+    }
+    return out;
+}
+
+SchemeChoice recommend(const std::vector<SchemeVerdict>& verdicts, const std::vector<StabilityRow>& stability) {
+    SchemeChoice rec;
+    std::vector<const SchemeVerdict*> sorted;
+    for (const auto& v : verdicts) sorted.push_back(&v);
+    std::stable_sort(sorted.begin(), sorted.end(), [](const SchemeVerdict* a, const SchemeVerdict* b) {
+        return (std::isnan(a->ns_per_step) ? INFINITY : a->ns_per_step) < (std::isnan(b->ns_per_step) ? INFINITY : b->ns_per_step);
+    });
+    for (const SchemeVerdict* v : sorted) {
+        std::vector<std::string> why;
+        if (v->control) {
+            rec.avoid.push_back({v->scheme, "a deliberately wrong control"});
+            continue;
+        }
+        if (v->torque.scenes() && !v->torque.at_least(2))
+            why.push_back(v->torque.fitted ? fmt::format("order {:.2g} under an orientation-dependent torque", v->torque.lo)
+                                           : "no second order under an orientation-dependent torque");
+        if (v->free.scenes() && !v->free.at_least(2)) why.push_back("no second order without torque");
+        if (v->momentum_runs && !v->momentum_kept)
+            why.push_back(fmt::format("loses angular momentum without torque (up to {:.1e})", v->momentum_worst));
+        if (!v->stability_weak.empty() && v->stability_lo < weak_stability_ratio)
+            why.push_back(fmt::format("stable only to {:.2g} of Peng's step on {}", v->stability_lo, v->stability_weak));
+        if (!why.empty()) {
+            std::string text;
+            for (const auto& w : why) text += (text.empty() ? "" : "; ") + w;
+            rec.avoid.push_back({v->scheme, text});
+        } else if (v->energy == EnergyVerdict::kept || v->energy == EnergyVerdict::bounded) {
+            rec.use.push_back(v->scheme);
+        } else {
+            rec.short_runs.push_back(v->scheme);
+        }
+    }
+    std::map<std::pair<double, std::string>, double> best;  // (ζ, scene) -> the largest ratio of any sound scheme
+    for (const auto& s : stability) {
+        if (s.omega_max != 0 || !(s.zeta > 0) || !s.failure.empty()) continue;
+        const auto v = std::find_if(verdicts.begin(), verdicts.end(), [&](const SchemeVerdict& x) { return x.scheme == s.scheme; });
+        if (v != verdicts.end() && v->control) continue;
+        double& b = best[{s.zeta, s.scene}];
+        b = std::max(b, s.dt_empirical / s.dt_peng);
+    }
+    for (const auto& [key, ratio] : best) {  // per ζ, the scene where the best scheme falls shortest of Peng's step
+        if (!(ratio < 1)) continue;
+        if (!rec.peng_unsafe.empty() && rec.peng_unsafe.back().zeta == key.first) {
+            if (ratio < rec.peng_unsafe.back().best_ratio) rec.peng_unsafe.back() = {key.first, key.second, ratio};
+        } else {
+            rec.peng_unsafe.push_back({key.first, key.second, ratio});
+        }
+    }
+    return rec;
+}
+
+}  // namespace rotbench

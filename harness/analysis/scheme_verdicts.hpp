@@ -1,0 +1,77 @@
+// What the runs say of each scheme, against what it claims: the figures behind the report's
+// verdict table and its recommendation. The judges are the claims module's (claims.hpp), so
+// the report cannot call "kept" or "bounded" what the gate fails.
+#pragma once
+
+#include "harness/analysis/orders.hpp"
+#include "harness/analysis/result_set.hpp"
+#include "harness/analysis/stability_study.hpp"
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace rotbench {
+
+// The observed order of the angular-velocity error over the judged scenes of one kind
+// (torque-free with a reference, or under an orientation-dependent torque).
+struct OrderVerdict {
+    std::string claimed = "—";  // "—", "exact" or the claimed order
+    int claimed_order = 0;
+    double lo = NAN, hi = NAN;  // over the scenes whose order was fitted
+    int fitted = 0, exact = 0, insufficient = 0, no_convergence = 0;
+    double stuck_lo = NAN, stuck_hi = NAN;  // relative error at the finest step where it does not converge
+    int scenes() const { return fitted + exact + insufficient + no_convergence; }
+    // Every judged scene fitted at least `order` - order_tolerance, or exact.
+    bool at_least(int order) const;
+};
+
+enum class EnergyVerdict { none, kept, bounded, drifting, not_judged };
+
+struct SchemeVerdict {
+    std::string scheme;
+    bool control = false;  // sound = false
+    OrderVerdict free, torque;
+    int momentum_runs = 0;  // torque-free runs judged
+    bool momentum_kept = false;
+    double momentum_worst = 0;
+    EnergyVerdict energy = EnergyVerdict::none;
+    double energy_bounded_max = 0, energy_growth = 0;  // the largest error over the horizon; the largest growth
+    std::string energy_failed;                          // scenes whose horizon run failed
+    double stability_lo = NAN, stability_hi = NAN;      // measured limit / Peng's over the contact pairs
+    std::string stability_weak, stability_failed;       // "scene ζ = z" lists
+    double ns_per_step = NAN;                            // the report's cost figure, on cost_scene()
+};
+
+// The scene whose ns_per_step is the report's cost figure: asymmetric_free, or else the first
+// single-body scene of the runs.
+std::string cost_scene(const ResultSet& set);
+
+// One per scheme of the runs, in their order.
+std::vector<SchemeVerdict> scheme_verdicts(const ResultSet& set, const std::vector<OrderRow>& orders,
+                                           const std::vector<StabilityRow>& stability);
+
+// Below this fraction of Peng's step, a scheme's stability limit rules it out for contacts.
+inline constexpr double weak_stability_ratio = 0.1;
+
+// Which schemes to use and which to avoid, and why, from the verdicts alone (the report's
+// recommendation).
+struct SchemeChoice {
+    // Second order with and without torque, momentum kept, energy bounded, no weak stability;
+    // cheapest first.
+    std::vector<std::string> use;
+    // Second order and momentum kept, but energy drifting: for short runs; cheapest first.
+    std::vector<std::string> short_runs;
+    std::vector<std::pair<std::string, std::string>> avoid;  // scheme, why
+    // Under damping (ζ > 0): each damping ratio at which, on some contact pair, no sound
+    // scheme is stable at Peng's step; the scene where the best falls shortest, and its ratio.
+    struct Unsafe {
+        double zeta;
+        std::string scene;
+        double best_ratio;
+    };
+    std::vector<Unsafe> peng_unsafe;
+};
+SchemeChoice recommend(const std::vector<SchemeVerdict>& verdicts, const std::vector<StabilityRow>& stability);
+
+}  // namespace rotbench
