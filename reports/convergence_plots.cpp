@@ -8,6 +8,7 @@
 #include <cmath>
 #include <fmt/format.h>
 #include <fmt/ranges.h>
+#include <map>
 
 namespace rotbench {
 
@@ -32,10 +33,12 @@ std::string convergence_plots(const std::string& scene, const std::vector<const 
     // One block per scheme: dt, error, cpu seconds (finite errors only).
     std::string data = fmt::format("# {}: dt {} cpu_seconds, one block per scheme: {}\n", scene, metric, fmt::join(schemes, " "));
     double lo = INFINITY, hi = 0, e_lo = INFINITY, e_hi = 0, c_lo = INFINITY, c_hi = 0;
+    std::map<std::string, std::vector<std::pair<double, double>>> points;  // each scheme's (dt, error)
     for (const auto& scheme : schemes) {
         for (const RunResult* r : runs) {
             const double e = r->value(metric);
             if (r->spec.scheme != scheme || !std::isfinite(e) || !(e > 0)) continue;
+            points[scheme].push_back({r->spec.dt, e});
             data += fmt::format("{} {} {}\n", format_number(r->spec.dt), format_number(e), format_number(r->value(metric::cpu_seconds)));
             lo = std::min(lo, r->spec.dt), hi = std::max(hi, r->spec.dt);
             e_lo = std::min(e_lo, e), e_hi = std::max(e_hi, e);
@@ -48,15 +51,29 @@ std::string convergence_plots(const std::string& scene, const std::vector<const 
 
     const auto panels = family_panels(set, schemes, best);
     const auto index_of = [&](const std::string& s) { return std::find(schemes.begin(), schemes.end(), s) - schemes.begin(); };
+    // A curve another one of the panel covers (the same errors to 1e-9) says so in the key.
+    const auto same_as = [&](const std::vector<std::string>& panel, std::size_t i) -> std::string {
+        const auto& mine = points[panel[i]];
+        for (std::size_t j = 0; j < i; ++j) {
+            const auto& theirs = points[panel[j]];
+            if (!mine.empty() && mine.size() == theirs.size() &&
+                std::equal(mine.begin(), mine.end(), theirs.begin(), [](const auto& a, const auto& b) {
+                    return a.first == b.first && std::abs(a.second - b.second) <= 1e-9 * std::abs(b.second);
+                }))
+                return " (= " + panel[j] + ")";
+        }
+        return "";
+    };
     const auto series = [&](std::size_t p, const std::string& columns) {
         std::string line = "plot ";
         for (std::size_t i = 0; i < panels[p].schemes.size(); ++i)
-            line += fmt::format("{}file index {} using {} with linespoints {} ps 0.6 title '{}'", i ? ", \\\n     " : "",
-                                index_of(panels[p].schemes[i]), columns, series_style(i), panels[p].schemes[i]);
+            line += fmt::format("{}file index {} using {} with linespoints {} title '{}{}'", i ? ", \\\n     " : "",
+                                index_of(panels[p].schemes[i]), columns, scheme_style(set, panels[p].schemes[i], i),
+                                panels[p].schemes[i], same_as(panels[p].schemes, i));
         return line;
     };
-    // Reference slopes 1, 2 and 4 through the middle of the errors, over the data's dt, labelled
-    // at their right end instead of taking a place in the key.
+    // Reference slopes 1, 2 and 4 through the middle of the errors, over the data's dt, numbered
+    // inside the frame where each leaves it (its right end, or the top or bottom of the errors).
     const double dt_mid = std::sqrt(lo * hi), e_mid = std::sqrt(e_lo * e_hi);
     const std::string common = fmt::format(
         "set logscale xy\nset format x '%g'\nset format y '%.0e'\nset grid\nfile = 'runs_{}.dat'\n", scene);
@@ -66,9 +83,14 @@ std::string convergence_plots(const std::string& scene, const std::vector<const 
         "set xrange [lo/1.5:hi*1.5]\nset yrange [{5}/3:{6}*3]\nset samples 200\n",
         error_label(metric), format_number(e_mid), format_number(dt_mid), format_number(lo), format_number(hi),
         format_number(e_lo), format_number(e_hi));
-    for (int p : {1, 2, 4})
-        conv_setup += fmt::format("set label {0} 'slope {0}' at {1},{2} left font ',9' tc rgb 'gray40'\n", p, format_number(hi),
-                                  format_number(e_mid * std::pow(hi / dt_mid, p)));
+    for (int p : {1, 2, 4}) {
+        const double y_top = e_hi * 2, y_bottom = e_lo / 2;  // inside the y range, [e_lo / 3, e_hi * 3]
+        double x = hi, y = e_mid * std::pow(hi / dt_mid, p);
+        if (y > y_top) x = dt_mid * std::pow(y_top / e_mid, 1.0 / p), y = y_top;
+        if (y < y_bottom) x = dt_mid * std::pow(y_bottom / e_mid, 1.0 / p), y = y_bottom;
+        conv_setup += fmt::format("set label {0} '{0}' at {1},{2} right offset -0.4,0.6 font ',10' tc rgb 'gray20' front\n", p,
+                                  format_number(x), format_number(y));
+    }
     const std::string conv = panel_grid_script(
         gnuplot_output(fmt::format("convergence_{}.svg", scene)), fmt::format("{}: {} against dt", scene, metric), conv_setup,
         panels, [&](std::size_t p) {

@@ -25,9 +25,9 @@ std::string plot_script(const std::string& scene, double dt, const std::vector<c
                                  std::string line = "plot ";
                                  for (std::size_t i = 0; i < panels[p].schemes.size(); ++i) {
                                      const auto at = std::find(schemes.begin(), schemes.end(), panels[p].schemes[i]) - schemes.begin();
-                                     line += fmt::format("{}'../series/{}' using 1:2 with lines lw 1.5 {} title '{}'",
+                                     line += fmt::format("{}'../series/{}' using 1:2 with lines {} title '{}'",
                                                          i ? ", \\\n     " : "", series_file_name(*runs[at]),
-                                                         series_colour(i), panels[p].schemes[i]);
+                                                         scheme_style(set, panels[p].schemes[i], i), panels[p].schemes[i]);
                                  }
                                  return line + "\n";
                              });

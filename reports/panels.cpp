@@ -7,13 +7,28 @@
 namespace rotbench {
 namespace {
 
-const std::vector<std::string> family_order = {"seed schemes", "kick-drift-kick", "others"};
+const std::vector<std::string> family_order = {"seed schemes", "kick-drift-kick", "candidates", "others"};
+
+const char* const colours[] = {"#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd", "#8c564b", "#e377c2", "#17becf",
+                               "#7f7f7f", "#bcbd22", "#393b79", "#ad494a", "#637939", "#8c6d31", "#7b4173", "#3182bd"};
+
+// A scheme's place among the schemes of the set (described, or of its runs), in id order: the
+// same in every plot drawn from one set.
+std::size_t scheme_index(const ResultSet& set, const std::string& scheme) {
+    std::vector<std::string> ids;
+    for (const auto& r : set.runs) ids.push_back(r.spec.scheme);
+    for (const auto& [id, info] : set.schemes) ids.push_back(id);
+    std::sort(ids.begin(), ids.end());
+    ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+    return static_cast<std::size_t>(std::lower_bound(ids.begin(), ids.end(), scheme) - ids.begin());
+}
 
 }  // namespace
 
 std::string family_title(const ResultSet& set, const std::string& scheme) {
     const SchemeInfo* info = set.scheme(scheme);
     if (!info || !info->claims.sound) return "others";
+    if (!info->plugin_path.empty() || info->client) return "candidates";
     if (info->claims.family == "seed") return "seed schemes";
     if (info->claims.family == "kick_drift_kick") return "kick-drift-kick";
     return "others";
@@ -64,24 +79,26 @@ std::string panel_grid_script(const std::string& output_line, const std::string&
     const double top = 1.0 - 40.0 / height, cell_h = (top - 0.0) / static_cast<double>(rows), cell_w = 1.0 / columns;
     for (std::size_t i = 0; i < panels.size(); ++i) {
         const double x0 = cell_w * static_cast<double>(i % columns), y1 = top - cell_h * static_cast<double>(i / columns);
-        // The plot area: 11 % of the cell for the y labels, 30 % for the key, which sits there.
+        // The plot area: 15 % of the cell for the y tick labels and title (room for "1e-15" and
+        // the title at 11 pt), 36 % for the key, which sits there (a 16-letter id and "(= id)").
         s += fmt::format("set lmargin at screen {:.4f}\nset rmargin at screen {:.4f}\nset tmargin at screen {:.4f}\n"
-                         "set bmargin at screen {:.4f}\nset title '{}'\nset key at screen {:.4f},{:.4f} left top Left reverse\n",
-                         x0 + 0.11 * cell_w, x0 + 0.70 * cell_w, y1 - 0.10 * cell_h, y1 - cell_h + 0.16 * cell_h,
-                         panels[i].title, x0 + 0.72 * cell_w, y1 - 0.10 * cell_h);
+                         "set bmargin at screen {:.4f}\nset title '{}'\nset key at screen {:.4f},{:.4f} left top Left reverse samplen 1.5 font ',10'\n",
+                         x0 + 0.15 * cell_w, x0 + 0.62 * cell_w, y1 - 0.10 * cell_h, y1 - cell_h + 0.16 * cell_h,
+                         panels[i].title, x0 + 0.635 * cell_w, y1 - 0.10 * cell_h);
         s += plot(i);
     }
     return s + "unset multiplot\n";
 }
 
-std::string series_colour(std::size_t i) {
-    static const char* colours[] = {"#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd", "#8c564b", "#e377c2", "#17becf"};
-    return fmt::format("lc rgb '{}'", colours[i % 8]);
-}
+std::string series_colour(std::size_t i) { return fmt::format("lc rgb '{}'", colours[i % 16]); }
 
-std::string series_style(std::size_t i) {
+std::string scheme_colour(const ResultSet& set, const std::string& scheme) { return series_colour(scheme_index(set, scheme)); }
+
+std::string scheme_style(const ResultSet& set, const std::string& scheme, std::size_t layer) {
     static const int points[] = {7, 5, 9, 11, 13, 4, 6, 8};
-    return fmt::format("{} pt {}", series_colour(i), points[i % 8]);
+    const std::size_t k = scheme_index(set, scheme);
+    const double wider = static_cast<double>(max_series_per_panel - std::min(layer, max_series_per_panel - 1));
+    return fmt::format("{} pt {} lw {:.2f} ps {:.2f}", series_colour(k), points[k % 8], 0.8 + 0.25 * wider, 0.4 + 0.1 * wider);
 }
 
 }  // namespace rotbench

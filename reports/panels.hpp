@@ -1,5 +1,5 @@
 // Plots that stay readable with any number of schemes: the schemes are grouped by family
-// (the seed's, kick-drift-kick, the others) into panels of at most 8 series, 8 being what
+// (the seed's, kick-drift-kick, candidates, the others) into panels of at most 8 series, 8 being what
 // colours and point types keep apart, drawn on a grid of panels of one size.
 #pragma once
 
@@ -19,8 +19,8 @@ struct Panel {
     std::vector<std::string> schemes;
 };
 
-// The family a scheme is drawn with: "seed schemes", "kick-drift-kick" or "others" (controls,
-// sound = false, and plug-ins that name no family go with the others).
+// The family a scheme is drawn with: "seed schemes", "kick-drift-kick", "candidates" (plug-ins
+// and clients, judged beside the published schemes) or "others" (controls, sound = false).
 std::string family_title(const ResultSet& set, const std::string& scheme);
 
 // The schemes' families in that order, each cut into panels of at most 8; then, when `best`
@@ -39,9 +39,14 @@ std::vector<std::string> best_of_families(const ResultSet& set, const std::vecto
 std::string panel_grid_script(const std::string& output_line, const std::string& title, const std::string& setup,
                               const std::vector<Panel>& panels, const std::function<std::string(std::size_t)>& plot);
 
-// The gnuplot style of the i-th series of a panel (colour and point type), distinct for i < 8;
-// its colour alone, for lines without points.
-std::string series_style(std::size_t i);
+// The gnuplot style of a scheme, the same in every plot of a report: its colour and point type,
+// from its place among the schemes of the runs (16 colours, 8 point types: distinct up to 128
+// schemes); its colour alone, for lines without points. `layer`, the series' place in its
+// panel, widens the lines and points drawn first, so that a curve another one covers still
+// shows around it.
+std::string scheme_style(const ResultSet& set, const std::string& scheme, std::size_t layer);
+std::string scheme_colour(const ResultSet& set, const std::string& scheme);
+// The colour of the i-th of a plot's own series (runs that are not one scheme's each).
 std::string series_colour(std::size_t i);
 
 }  // namespace rotbench

@@ -50,8 +50,8 @@ std::string limit_plot(const std::string& stem, const std::string& scene, const 
             std::string line = "plot ";
             for (std::size_t i = 0; i < panels[p].schemes.size(); ++i)
                 line += fmt::format("file index {} using 1:2 with linespoints {} title '{}', ",
-                                    std::find(schemes.begin(), schemes.end(), panels[p].schemes[i]) - schemes.begin(), series_style(i),
-                                    panels[p].schemes[i]);
+                                    std::find(schemes.begin(), schemes.end(), panels[p].schemes[i]) - schemes.begin(),
+                                    scheme_style(set, panels[p].schemes[i], i), panels[p].schemes[i]);
             return line + "file index 0 using 1:3 with lines dt 2 lc 'black' title 'Peng (eq. 46)'\n";
         });
     const Drawn drawn = draw_with_gnuplot(dir, "plots/" + name + ".gp", script, "plots/" + name + ".svg");
@@ -104,9 +104,9 @@ std::string spectral_radius_plots(const std::vector<SpectralCurve>& curves, cons
             [&](std::size_t p) {
                 std::string line = "plot ";
                 for (std::size_t i = 0; i < panels[p].schemes.size(); ++i)
-                    line += fmt::format("{}file index {} using 1:($2-1) with linespoints {} ps 0.5 title '{}'", i ? ", " : "",
+                    line += fmt::format("{}file index {} using 1:($2-1) with linespoints {} title '{}'", i ? ", " : "",
                                         std::find(schemes.begin(), schemes.end(), panels[p].schemes[i]) - schemes.begin(),
-                                        series_style(i), panels[p].schemes[i]);
+                                        scheme_style(set, panels[p].schemes[i], i), panels[p].schemes[i]);
                 return line + "\n";
             });
         const Drawn drawn = draw_with_gnuplot(dir, fmt::format("plots/spectral_radius_{}.gp", id), script,

@@ -62,6 +62,11 @@ TEST_CASE("plug-in: a run remembers what it ran, so report and merge describe a 
     REQUIRE(binary(args).status == 0);
     const std::string row = "| `zvw_end_velocity` | 2 → ";  // the claimed order beside the observed one
     CHECK_THAT(read(dir / "run" / "report.md"), Catch::Contains(row));
+    // The candidate is drawn in a panel of its own, not beside the control among the others.
+    const std::string plot = read(dir / "run" / "plots" / "convergence_asymmetric_free.gp");
+    const auto candidates = plot.find("set title 'candidates'");
+    REQUIRE(candidates != std::string::npos);
+    CHECK(plot.find("title 'zvw_end_velocity'", candidates) < plot.find("set title", candidates + 1));
     const std::string recorded = read(dir / "run" / "schemes.json");
     CHECK_THAT(recorded, Catch::Contains("\"hash\"") && Catch::Contains("test_plugin_end_velocity_zvw") &&
                              Catch::Contains("optimised, assertions off"));

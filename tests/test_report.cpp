@@ -121,6 +121,28 @@ TEST_CASE("the report of a quick run with its stability study") {
         CHECK(stability_csv(rows) == read(report_dir() / "stability.csv"));
         CHECK(stability_spin_csv(rows) == read(report_dir() / "stability_spin.csv"));
     }
+    SECTION("a scheme has one colour and one marker in every plot, and a covered curve says what covers it") {
+        std::map<std::string, std::set<std::string>> styles;  // scheme -> "lc rgb '#...' pt N" seen
+        const std::regex series(R"((lc rgb '#[0-9a-f]{6}')(?: pt (\d+))?.*? title '([a-z0-9_]+)( \(= [a-z0-9_]+\))?')");
+        for (const auto& entry : fs::directory_iterator(report_dir() / "plots")) {
+            if (entry.path().extension() != ".gp" || entry.path().filename().string().rfind("granular", 0) == 0) continue;
+            const std::string script = read(entry.path());
+            for (auto it = std::sregex_iterator(script.begin(), script.end(), series); it != std::sregex_iterator(); ++it) {
+                const auto& m = *it;
+                styles[m[3]].insert(m[1].str() + (m[2].matched ? " pt " + m[2].str() : ""));
+            }
+        }
+        REQUIRE(styles.size() == 5);
+        std::set<std::string> colours;
+        for (const auto& [scheme, seen] : styles) {
+            INFO(scheme);
+            std::set<std::string> colour;
+            for (const auto& st : seen) colour.insert(st.substr(0, st.find(" pt")));
+            CHECK(colour.size() == 1);
+            colours.insert(*colour.begin());
+        }
+        CHECK(colours.size() == styles.size());
+    }
     SECTION("the plots have units on their axes, at most 8 series per panel, and panels of one width") {
         int scripts = 0;
         for (const auto& entry : fs::directory_iterator(report_dir() / "plots")) {
