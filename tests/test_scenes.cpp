@@ -269,3 +269,36 @@ TEST_CASE("every scene's registry entry states its traits, the same as the scene
     CHECK(SceneRegistry::instance().at("sphere_pair", "scene").extra.stability);
     CHECK(SceneRegistry::instance().at("dipole_top", "scene").extra.torque_depends_on_orientation);
 }
+
+TEST_CASE("the reference cache is trimmed to its size, least recently used first, touching nothing else") {
+    namespace fs = std::filesystem;
+    const auto dir = fs::temp_directory_path() / ("rotbench_cache_trim_" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    Trajectory t;
+    t.bodies = 1;
+    t.values.assign(100 * Trajectory::width, 0.25);
+    const std::string bytes = encode_trajectory("k", t);
+    const auto now = fs::file_time_type::clock::now();
+    const auto put = [&](const std::string& name, const std::string& content, int hours_ago) {
+        std::ofstream(dir / name, std::ios::binary) << content;
+        fs::last_write_time(dir / name, now - std::chrono::hours(hours_ago));
+    };
+    put("dipole_top-00000000000000a1.traj", bytes, 5);  // the oldest: goes first
+    put("dipole_top-00000000000000a2.traj", bytes, 4);
+    put("dipole_top-00000000000000a3.traj", bytes, 1);
+    put("dipole_top-00000000000000a4.traj", "not a trajectory", 9);  // named like one, not one: kept
+    put("notes.txt", "the user's", 9);                                // not the cache's: kept
+    trim_cache(dir, 2 * bytes.size() + 100);
+    CHECK_FALSE(fs::exists(dir / "dipole_top-00000000000000a1.traj"));
+    CHECK(fs::exists(dir / "dipole_top-00000000000000a2.traj"));
+    CHECK(fs::exists(dir / "dipole_top-00000000000000a3.traj"));
+    CHECK(fs::exists(dir / "dipole_top-00000000000000a4.traj"));
+    CHECK(fs::exists(dir / "notes.txt"));
+    // `keep` (the file just written) survives even when it is the oldest.
+    trim_cache(dir, 0, dir / "dipole_top-00000000000000a2.traj");
+    CHECK(fs::exists(dir / "dipole_top-00000000000000a2.traj"));
+    CHECK_FALSE(fs::exists(dir / "dipole_top-00000000000000a3.traj"));
+    CHECK(fs::exists(dir / "notes.txt"));
+    fs::remove_all(dir);
+}

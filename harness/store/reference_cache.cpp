@@ -5,6 +5,7 @@
 
 #include "build_info.hpp"
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
@@ -12,6 +13,7 @@
 #include <fmt/format.h>
 #include <fstream>
 #include <string_view>
+#include <vector>
 
 namespace rotbench {
 namespace {
@@ -38,7 +40,48 @@ std::filesystem::path file_for(const std::string& scene_id, const std::string& k
     return dir.empty() ? dir : dir / fmt::format("{}-{:016x}.traj", scene_id, Fnv1a().feed(key).value());
 }
 
+// A file of the cache: its name as file_for() makes it, and rotbench's magic first. Nothing else
+// in the directory is ever removed.
+bool cache_file(const std::filesystem::path& path) {
+    const std::string name = path.filename().string();
+    const auto dash = name.rfind('-');
+    if (dash == std::string::npos || name.size() != dash + 1 + 16 + 5 || !name.ends_with(".traj") ||
+        name.find_first_not_of("0123456789abcdef", dash + 1) != dash + 17)
+        return false;
+    char head[sizeof magic] = {};
+    std::ifstream in(path, std::ios::binary);
+    return in.read(head, sizeof head) && std::memcmp(head, magic, sizeof magic) == 0;
+}
+
 }  // namespace
+
+// Another process may remove the same files at once: errors are ignored.
+void trim_cache(const std::filesystem::path& dir, std::uintmax_t limit, const std::filesystem::path& keep) {
+    namespace fs = std::filesystem;
+    struct Entry {
+        fs::file_time_type used;
+        std::uintmax_t bytes;
+        fs::path path;
+    };
+    std::vector<Entry> entries;
+    std::uintmax_t total = 0;
+    std::error_code error;
+    for (fs::directory_iterator it(dir, error), end; !error && it != end; it.increment(error)) {
+        if (!it->is_regular_file(error) || it->is_symlink(error)) continue;
+        const auto bytes = it->file_size(error);
+        const auto used = it->last_write_time(error);
+        if (error) continue;
+        total += bytes;
+        if (it->path() != keep) entries.push_back({used, bytes, it->path()});
+    }
+    if (total <= limit) return;
+    std::sort(entries.begin(), entries.end(), [](const Entry& a, const Entry& b) { return a.used < b.used; });
+    for (const Entry& e : entries) {
+        if (total <= limit) break;
+        if (!cache_file(e.path)) continue;
+        if (fs::remove(e.path, error)) total -= e.bytes;
+    }
+}
 
 std::string cache_build_key() {
     return fmt::format("{}|{}|{}|{}", build_info::commit, build_info::compiler, build_info::build_type, build_info::flags);
@@ -100,7 +143,9 @@ std::optional<Trajectory> load_cached(const std::string& scene_id, const std::st
     std::ifstream in(path, std::ios::binary);
     std::string bytes(size, '\0');
     if (!in.read(bytes.data(), static_cast<std::streamsize>(size))) return std::nullopt;
-    return decode_trajectory(bytes, key);
+    auto trajectory = decode_trajectory(bytes, key);
+    if (trajectory) std::filesystem::last_write_time(path, std::filesystem::file_time_type::clock::now(), error);  // used now
+    return trajectory;
 }
 
 void store_cached(const std::string& scene_id, const std::string& run_key, const Trajectory& trajectory) {
@@ -110,6 +155,7 @@ void store_cached(const std::string& scene_id, const std::string& run_key, const
     try {
         std::filesystem::create_directories(path.parent_path());
         write_file_atomically(path, encode_trajectory(key, trajectory));
+        trim_cache(path.parent_path(), max_cache_bytes, path);
     } catch (const std::exception&) {
         // An unwritable cache costs time, not correctness.
     }

@@ -9,6 +9,8 @@
 #include "references/trajectory.hpp"
 
 #include <cstddef>
+#include <cstdint>
+#include <filesystem>
 #include <optional>
 #include <string>
 
@@ -21,6 +23,14 @@ bool build_is_pinned();
 
 // Larger trajectories are not kept: 512 MiB, 9.6 million body-steps of 56 bytes.
 inline constexpr std::size_t max_cached_bytes = std::size_t(1) << 29;
+// The whole cache is kept below this: past it, storing a trajectory removes the cache's files
+// used least recently (a hit refreshes a file's time). The key names the build, so every commit
+// makes new files; unbounded, a developer's cache grew to 77 GB and filled the disk.
+inline constexpr std::uintmax_t max_cache_bytes = std::uintmax_t(2) << 30;
+// Removes the least recently used cache files of `dir` (named as the cache names them and
+// beginning with its magic: nothing else is touched) until the folder holds at most `limit`
+// bytes; never `keep`.
+void trim_cache(const std::filesystem::path& dir, std::uintmax_t limit, const std::filesystem::path& keep = {});
 
 std::optional<Trajectory> load_cached(const std::string& scene_id, const std::string& key);
 void store_cached(const std::string& scene_id, const std::string& key, const Trajectory& trajectory);
