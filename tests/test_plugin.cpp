@@ -95,9 +95,17 @@ TEST_CASE("plug-in: a run remembers what it ran, so report and merge describe a 
 TEST_CASE("plug-in: a schemes.json that is not rotbench's is refused in one line") {
     const fs::path dir = fresh_dir("plugin_bad_schemes");
     REQUIRE(binary({"run", "--schemes", "direct", "--scenes", "asymmetric_free", "--quick", "--out", dir.string()}).status == 0);
-    write(dir / "schemes.json", "{\"direct\": {\"summary\": 1}}");
-    const Cli r = binary({"report", dir.string()});
-    CHECK(r.status == 2);
-    CHECK(one_line(r.err));
-    CHECK_THAT(r.err, Catch::Contains("schemes.json: not a schemes.json rotbench wrote"));
+    const std::string good = read(dir / "schemes.json");
+    const std::string order = "\"order\": 1,";
+    REQUIRE(good.find(order) != std::string::npos);
+    std::string huge = good;
+    huge.replace(huge.find(order), order.size(), "\"order\": 1e300,");  // would convert to int with undefined behaviour
+    for (const std::string& bad : {std::string("{\"direct\": {\"summary\": 1}}"), std::string("[1]"), huge}) {
+        write(dir / "schemes.json", bad);
+        const Cli r = binary({"report", dir.string()});
+        INFO(bad.substr(0, 80));
+        CHECK(r.status == 2);
+        CHECK(one_line(r.err));
+        CHECK_THAT(r.err, Catch::Contains("schemes.json: not a schemes.json rotbench wrote"));
+    }
 }

@@ -111,7 +111,10 @@ Outcome advise_one(Executor& executor, const StabilityProbe& probe, const ParamO
         o.r.exact_rotation_error = relative_error(exact);
         o.r.contact_share = o.r.exact_rotation_error / o.r.predicted_error;
     }
-    o.r.limited_by = o.r.how == "stability-bound" ? "stability" : o.r.contact_share >= advice_contact_share ? "contact" : "rotation";
+    o.r.limited_by = o.r.how == "stability-bound"                ? "stability"
+                     : std::isnan(o.r.contact_share)                ? "unknown"  // the exact rotation flow failed at dt
+                     : o.r.contact_share >= advice_contact_share ? "contact"
+                                                                     : "rotation";
     o.r.ns_per_step = median(ns);
     o.r.cpu_seconds = o.r.ns_per_step * 1e-9 / dt;
     if (verify) {
@@ -129,7 +132,7 @@ std::string advice_verdict(const Advice& a) {
     const auto& rs = a.recommendations;
     if (rs.empty()) return fmt::format("No scheme meets {:g} within the budget of a run.", a.tolerance);
     std::string out;
-    for (const std::string cause : {"contact", "rotation", "stability"}) {
+    for (const std::string cause : {"contact", "rotation", "stability", "unknown"}) {
         std::vector<std::string> ids;
         double lo = INFINITY, hi = 0;
         for (const auto& r : rs)
@@ -145,11 +148,14 @@ std::string advice_verdict(const Advice& a) {
         else if (cause == "rotation")
             out += fmt::format("For {} the rotation scheme's own error adds to the contact's and sets dt ({}): there the scheme's "
                                "order and error constant matter, weighed against its cost per step. ", who, dts);
-        else
+        else if (cause == "stability")
             out += fmt::format("For {} stability sets dt: {:g} is met at 0.9 of the scheme's own stability limit ({}). ", who,
                                a.tolerance, dts);
+        else
+            out += fmt::format("For {} what limits dt is not known: {} did not run stably at that dt ({}). ", who,
+                               advice_exact_rotation, dts);
     }
-    out.pop_back();
+    out.pop_back();  // the space after the last sentence: every recommendation has one of the causes
     return out;
 }
 

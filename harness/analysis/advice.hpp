@@ -57,7 +57,8 @@ struct Recommendation {
     // The error at dt of advice_exact_rotation, and its share of this scheme's predicted error.
     double exact_rotation_error = std::numeric_limits<double>::quiet_NaN(), contact_share = exact_rotation_error;
     // What sets dt: "stability" (the first rung already meets the tolerance), "contact" (the
-    // exact rotation flow errs as much at dt) or "rotation" (the rotation scheme's own error).
+    // exact rotation flow errs as much at dt), "rotation" (the rotation scheme's own error), or
+    // "unknown" (the exact rotation flow failed at dt).
     std::string limited_by;
     double predicted_error = 0;       // relative angular-velocity error at dt, from the ladder
     std::string how;                  // "stability-bound" or "interpolated" between two measured rungs

@@ -33,14 +33,20 @@ json to_json(const SchemeInfo& s) {
             {"plugin", {{"path", s.plugin_path}, {"hash", s.plugin_hash}, {"build", s.plugin_build}}}};
 }
 
+// A claimed order: a small whole number (a float, or one past int, would convert with undefined behaviour).
+int order_of(const json& j) {
+    if (!j.is_number_integer() || j.get<long long>() < 0 || j.get<long long>() > 100) throw InputError("a claimed order must be 0 to 100");
+    return static_cast<int>(j.get<long long>());
+}
+
 SchemeInfo from_json(const std::string& id, const json& j) {
     SchemeInfo s;
     s.id = id;
     j.at("summary").get_to(s.summary), j.at("source").get_to(s.source), j.at("notes").get_to(s.notes);
     const json& c = j.at("claims");
-    c.at("without_torque").at("order").get_to(s.claims.without_torque.order);
+    s.claims.without_torque.order = order_of(c.at("without_torque").at("order"));
     c.at("without_torque").at("reason").get_to(s.claims.without_torque.reason);
-    c.at("with_torque").at("order").get_to(s.claims.with_torque.order);
+    s.claims.with_torque.order = order_of(c.at("with_torque").at("order"));
     c.at("with_torque").at("reason").get_to(s.claims.with_torque.reason);
     c.at("exact_without_torque").get_to(s.claims.exact_without_torque);
     c.at("conserves_momentum").get_to(s.claims.conserves_momentum);
@@ -87,11 +93,13 @@ SchemeInfos parse_schemes_json(const std::string& text, const std::string& name)
         if (!all.is_object()) throw InputError(name + ": not a schemes.json rotbench wrote: not an object");
         SchemeInfos out;
         for (const auto& [id, j] : all.items()) {
-            if (!is_id(id)) throw InputError(name + ": '" + id + "' is not a scheme id");
+            if (!is_id(id)) throw InputError("'" + id + "' is not a scheme id");
             out[id] = from_json(id, j);
         }
         return out;
     } catch (const json::exception& e) {
+        throw InputError(name + ": not a schemes.json rotbench wrote: " + e.what());
+    } catch (const InputError& e) {
         throw InputError(name + ": not a schemes.json rotbench wrote: " + e.what());
     }
 }
