@@ -1,8 +1,9 @@
 // The report's section on clients (docs/clients.md): per client with a counterpart and per scene,
-// its largest difference from the built-in scheme it should equal over every step of its runs.
+// its largest difference from the built-in scheme it should equal over every step of its runs
+// (harness/analysis/scheme_verdicts.hpp judges whether it is the same map).
 #pragma once
 
-#include "harness/analysis/result_set.hpp"
+#include "harness/analysis/scheme_verdicts.hpp"
 
 #include <string>
 

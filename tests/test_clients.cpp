@@ -3,6 +3,8 @@
 // client file is refused in one line. The program of these tests is rotbench itself, behind
 // tests/clients/rotbench_client.py, so its runs must equal the built-in's bit for bit.
 #include "cli_helpers.hpp"
+#include "harness/analysis/scheme_verdicts.hpp"
+#include "harness/store/results_csv.hpp"
 #include "harness/exec/client_run.hpp"
 #include "harness/exec/executor.hpp"
 #include "harness/store/client.hpp"
@@ -205,5 +207,13 @@ TEST_CASE("clients: the report says whether a client is its counterpart's map, t
     CHECK_THAT(md, Catch::Contains("| the same, to round-off |"));
     // fincham against no_squish: two second-order maps, so their difference falls as dt^2.
     CHECK_THAT(md, Catch::Contains("another map: the difference falls as dt^2.0") && Catch::Contains("it is fincham, not no_squish |"));
+    // The judgement itself, from the run store: the same map for one, another of order 2 for the other.
+    const auto verdicts = counterpart_verdicts(describe(read_results(dir / "out"), read_schemes(dir / "out")));
+    REQUIRE(verdicts.size() == 2);
+    for (const auto& v : verdicts) {
+        INFO(v.client);
+        CHECK(v.same_map == (v.client == "client_same"));
+        if (!v.same_map) CHECK(v.order == Approx(2.0).margin(0.1));
+    }
     fs::remove_all(dir);
 }

@@ -149,6 +149,34 @@ std::vector<SchemeVerdict> scheme_verdicts(const ResultSet& set, const std::vect
     return out;
 }
 
+double CounterpartVerdict::relative(const RunResult& r) { return r.value(metric::counterpart_omega_diff_max) / r.value(metric::omega_ref_max); }
+
+std::vector<CounterpartVerdict> counterpart_verdicts(const ResultSet& set) {
+    // client -> scene -> its runs with a measured difference, by dt
+    std::map<std::string, std::map<std::string, std::map<double, const RunResult*>>> found;
+    for (const auto& r : set.runs) {
+        const SchemeInfo* info = set.scheme(r.spec.scheme);
+        if (info && !info->counterpart.empty() && r.has(metric::counterpart_omega_diff_max)) found[r.spec.scheme][r.spec.scene][r.spec.dt] = &r;
+    }
+    std::vector<CounterpartVerdict> out;
+    for (const auto& [client, scenes] : found)
+        for (const auto& [scene, by_dt] : scenes) {
+            CounterpartVerdict v{client, set.scheme(client)->counterpart, scene, by_dt.rbegin()->second, by_dt.begin()->second};
+            v.same_map = std::all_of(by_dt.begin(), by_dt.end(), [](const auto& entry) {
+                const RunResult& r = *entry.second;
+                return r.value(metric::counterpart_omega_diff_max) <= round_off_bound(r, metric::counterpart_omega_diff_max) &&
+                       r.value(metric::counterpart_angle_diff_max) <= round_off_bound(r, metric::counterpart_angle_diff_max);
+            });
+            if (!v.same_map) {
+                v.note = set.scheme(client)->counterpart_note;
+                const double c = CounterpartVerdict::relative(*v.coarse), f = CounterpartVerdict::relative(*v.fine);
+                if (by_dt.size() > 1 && c > 0 && f > 0) v.order = std::log(c / f) / std::log(v.coarse->spec.dt / v.fine->spec.dt);
+            }
+            out.push_back(std::move(v));
+        }
+    return out;
+}
+
 SchemeChoice recommend(const std::vector<SchemeVerdict>& verdicts, const std::vector<StabilityRow>& stability) {
     SchemeChoice rec;
     std::vector<const SchemeVerdict*> sorted;

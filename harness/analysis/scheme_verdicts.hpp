@@ -51,6 +51,20 @@ std::string cost_scene(const ResultSet& set);
 std::vector<SchemeVerdict> scheme_verdicts(const ResultSet& set, const std::vector<OrderRow>& orders,
                                            const std::vector<StabilityRow>& stability);
 
+// A client against the built-in scheme it should equal, on one scene: the same map (its runs
+// differ from the counterpart's by round-off only, at every dt) or another one, whose
+// difference falls as dt^order between the coarsest and the finest dt.
+struct CounterpartVerdict {
+    std::string client, counterpart, scene;
+    const RunResult* coarse = nullptr;  // its runs at the coarsest and the finest dt
+    const RunResult* fine = nullptr;
+    bool same_map = false;
+    double order = NAN;
+    std::string note;  // the client file's reason where it is not the same map
+    static double relative(const RunResult& r);  // max |Δw| / |w_ref|
+};
+std::vector<CounterpartVerdict> counterpart_verdicts(const ResultSet& set);
+
 // Below this fraction of Peng's step, a scheme's stability limit rules it out for contacts.
 inline constexpr double weak_stability_ratio = 0.1;
 
