@@ -21,7 +21,8 @@ Axes axes_of(const std::string& scene) {
     return {"displacement of the lower half (m)", "shear stress (Pa)", "Shear stress against displacement"};
 }
 
-std::string curve_script(const std::string& scene, double dt, const std::vector<const RunResult*>& runs, const std::string& svg) {
+std::string curve_script(const std::string& scene, double dt, const std::vector<const RunResult*>& runs, const std::string& svg,
+                         const ResultSet& set) {
     const Axes axes = axes_of(scene);
     std::string s = fmt::format(
         "set terminal svg size 900,560 dynamic noenhanced font 'sans,11'\n{}\n"
@@ -32,9 +33,8 @@ std::string curve_script(const std::string& scene, double dt, const std::vector<
         const RunResult& r = *runs[i];
         const std::string file = "../series/" + series_file_name(r);
         const bool band = r.series_columns.size() == 4;  // x, mean, min, max: an ensemble's
-        if (band) s += fmt::format("'{}' using 1:3:4 with filledcurves {} notitle, \\\n     ", file, series_colour(i));
-        // Eight colours; past them the lines are dashed.
-        s += fmt::format("'{}' using 1:2 with lines lw 1.8 {} dt {} title '{}{}'{}", file, series_colour(i), 1 + i / 8, r.spec.scheme,
+        if (band) s += fmt::format("'{}' using 1:3:4 with filledcurves {} notitle, \\\n     ", file, scheme_colour(set, r.spec.scheme));
+        s += fmt::format("'{}' using 1:2 with lines lw 1.8 {} title '{}{}'{}", file, scheme_colour(set, r.spec.scheme), r.spec.scheme,
                          band ? fmt::format(" (mean of {:.0f})", r.value(metric::ensemble_size)) : "", i + 1 < runs.size() ? ", \\\n     " : "\n");
     }
     return s;
@@ -97,7 +97,8 @@ std::string snapshot_svg(const std::string& title, const std::vector<std::vector
     return svg + "</svg>\n";
 }
 
-std::string granular_pictures(const std::string& scene, double dt, const std::vector<const RunResult*>& runs, const OutputDir& dir) {
+std::string granular_pictures(const std::string& scene, double dt, const std::vector<const RunResult*>& runs, const ResultSet& set,
+                              const OutputDir& dir) {
     std::vector<const RunResult*> curves;
     for (const RunResult* r : runs)
         if (!r->series.empty() && !r->has_energy_series()) curves.push_back(r);
@@ -105,7 +106,7 @@ std::string granular_pictures(const std::string& scene, double dt, const std::ve
     if (!curves.empty()) {
         for (const RunResult* r : curves) write_series_file(*r, dir);
         const std::string name = fmt::format("curve_{}_dt{}", scene, dt_tag(dt));
-        const Drawn drawn = draw_with_gnuplot(dir, "plots/" + name + ".gp", curve_script(scene, dt, curves, name + ".svg"), "plots/" + name + ".svg");
+        const Drawn drawn = draw_with_gnuplot(dir, "plots/" + name + ".gp", curve_script(scene, dt, curves, name + ".svg", set), "plots/" + name + ".svg");
         md += fmt::format("{} of each scheme{}. Data: `series/`.\n\n", axes_of(scene).what,
                           curves.front()->series_columns.size() == 4 ? ": the line is the ensemble's mean, the band spans its members" : "");
         md += drawn.ok ? fmt::format("![{}](plots/{}.svg)\n\n", name, name) : fmt::format("(plot not drawn: {}; script `plots/{}.gp`)\n\n", drawn.why, name);

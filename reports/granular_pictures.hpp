@@ -5,7 +5,7 @@
 // (walls/*.csv) as lines.
 #pragma once
 
-#include "harness/exec/run.hpp"
+#include "harness/analysis/result_set.hpp"
 #include "harness/store/output_dir.hpp"
 
 #include <string>
@@ -16,7 +16,8 @@ namespace rotbench {
 // The runs of one granular scene at one dt: writes their curves, snapshots and walls and draws
 // plots/curve_SCENE_dtDT.{gp,svg} and plots/snapshot_SCENE_SCHEME_dtDT.svg; returns the
 // Markdown that shows them (empty when no run recorded either).
-std::string granular_pictures(const std::string& scene, double dt, const std::vector<const RunResult*>& runs, const OutputDir& dir);
+std::string granular_pictures(const std::string& scene, double dt, const std::vector<const RunResult*>& runs, const ResultSet& set,
+                              const OutputDir& dir);
 
 // The SVG of a snapshot's rows {t, x, y, z, radius}: one panel per instant, side by side, the
 // spheres seen along +y (the farthest drawn first, lighter with distance), and over them the

@@ -104,7 +104,7 @@ std::string granular_section(const ResultSet& set, const OutputDir& dir) {
                     md += fmt::format("- {}: {:.0f} of {:.0f} runs failed{}.\n", r->spec.scheme,
                                       r->has(metric::ensemble_failed) ? r->value(metric::ensemble_failed) : 1.0, members,
                                       r->failure.empty() ? "" : ": " + r->failure);
-            md += "\n" + granular_pictures(scene.scene, dt, group, dir);
+            md += "\n" + granular_pictures(scene.scene, dt, group, set, dir);
         }
     }
     return md;

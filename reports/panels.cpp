@@ -23,6 +23,8 @@ std::size_t scheme_index(const ResultSet& set, const std::string& scheme) {
     return static_cast<std::size_t>(std::lower_bound(ids.begin(), ids.end(), scheme) - ids.begin());
 }
 
+std::string series_colour(std::size_t i) { return fmt::format("lc rgb '{}'", colours[i % 16]); }
+
 }  // namespace
 
 std::string family_title(const ResultSet& set, const std::string& scheme) {
@@ -89,8 +91,6 @@ std::string panel_grid_script(const std::string& output_line, const std::string&
     }
     return s + "unset multiplot\n";
 }
-
-std::string series_colour(std::size_t i) { return fmt::format("lc rgb '{}'", colours[i % 16]); }
 
 std::string scheme_colour(const ResultSet& set, const std::string& scheme) { return series_colour(scheme_index(set, scheme)); }
 

@@ -46,7 +46,5 @@ std::string panel_grid_script(const std::string& output_line, const std::string&
 // shows around it.
 std::string scheme_style(const ResultSet& set, const std::string& scheme, std::size_t layer);
 std::string scheme_colour(const ResultSet& set, const std::string& scheme);
-// The colour of the i-th of a plot's own series (runs that are not one scheme's each).
-std::string series_colour(std::size_t i);
 
 }  // namespace rotbench
