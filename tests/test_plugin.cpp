@@ -3,6 +3,8 @@
 // throws or returns NaN is a failed run, never a crash.
 #include "tests/cli_helpers.hpp"
 
+#include "schemes/plugin_abi.hpp"
+
 #include <catch2/catch.hpp>
 
 using namespace rotbench;
@@ -69,7 +71,7 @@ TEST_CASE("plug-in: a run remembers what it ran, so report and merge describe a 
     CHECK(plot.find("title 'zvw_end_velocity'", candidates) < plot.find("set title", candidates + 1));
     const std::string recorded = read(dir / "run" / "schemes.json");
     CHECK_THAT(recorded, Catch::Contains("\"hash\"") && Catch::Contains("test_plugin_end_velocity_zvw") &&
-                             Catch::Contains("optimised, assertions off"));
+                             Catch::Contains(ROTBENCH_PLUGIN_BUILD));  // built as this rotbench was
     // A stability study written into the same folder, then the report re-rendered, all without --plugin.
     REQUIRE(binary({"--plugin", PLUGIN_END_VELOCITY_ZVW, "stability", "--schemes", "zvw_end_velocity", "--scenes", "sphere_pair",
                     "--zeta", "0", "--out", stab, "--overwrite", "--quiet"})
@@ -79,7 +81,7 @@ TEST_CASE("plug-in: a run remembers what it ran, so report and merge describe a 
     REQUIRE(report.status == 0);
     const std::string md = read(dir / "run" / "report.md");
     CHECK_THAT(md, Catch::Contains(row));
-    CHECK_THAT(md, Catch::Contains("Plug-in `") && Catch::Contains("built optimised, assertions off."));
+    CHECK_THAT(md, Catch::Contains("Plug-in `") && Catch::Contains("built " ROTBENCH_PLUGIN_BUILD "."));
     // Two slices of a sweep, merged without --plugin.
     for (const std::string shard : {"1/2", "2/2"}) {
         std::vector<std::string> slice = {"--plugin", PLUGIN_END_VELOCITY_ZVW, "run", "--shard", shard,
