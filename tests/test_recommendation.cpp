@@ -46,17 +46,22 @@ TEST_CASE("recommendation: a scheme holding every claim is used, cheapest first,
     leaky.momentum_kept = false, leaky.momentum_worst = 5e-3;
     auto weak = sound("weak", 40);
     weak.stability_lo = 0.004, weak.stability_weak = "sphere_pair ζ = 0";
+    auto plateau = sound("plateau", 45);  // exact, but its error stops falling at 1.2e-9 on one scene: round-off
+    plateau.free.fitted = 0, plateau.free.exact = 4, plateau.free.no_convergence = 1, plateau.free.stuck_lo = plateau.free.stuck_hi = 1.2e-9;
+    auto stuck = sound("stuck", 45);  // an error that stops falling at 1e-3: not converging
+    stuck.free.no_convergence = 1, stuck.free.stuck_lo = stuck.free.stuck_hi = 1e-3;
     auto control = sound("control", 30);
     control.control = true;
-    for (const auto& x : {drifting, first_order, leaky, weak, control}) v.push_back(x);
+    for (const auto& x : {drifting, first_order, leaky, weak, control, plateau, stuck}) v.push_back(x);
     const SchemeChoice r = recommend(v, {});
-    CHECK(r.use == std::vector<std::string>{"a", "b"});
+    CHECK(r.use == std::vector<std::string>{"plateau", "a", "b"});
+    CHECK(avoided(r, "stuck", "no second order without torque"));
     CHECK(r.short_runs == std::vector<std::string>{"drifts"});
     CHECK(avoided(r, "first", "order 0.99 under an orientation-dependent torque"));
     CHECK(avoided(r, "leaky", "loses angular momentum without torque (up to 5.0e-03)"));
     CHECK(avoided(r, "weak", "stable only to 0.004 of Peng's step on sphere_pair ζ = 0"));
     CHECK(avoided(r, "control", "a deliberately wrong control"));
-    CHECK(r.avoid.size() == 4);
+    CHECK(r.avoid.size() == 5);
 }
 
 TEST_CASE("recommendation: Peng's step is flagged at a damping ratio only where no sound scheme reaches it") {

@@ -114,7 +114,8 @@ void stability_verdict(const std::vector<StabilityRow>& stability, SchemeVerdict
 }  // namespace
 
 bool OrderVerdict::at_least(int order) const {
-    return scenes() > 0 && fitted + exact == scenes() && (fitted == 0 || lo >= order - order_tolerance);
+    const bool stuck_at_round_off = no_convergence == 0 || stuck_hi < round_off_plateau;
+    return scenes() > 0 && insufficient == 0 && stuck_at_round_off && (fitted == 0 || lo >= order - order_tolerance);
 }
 
 std::string cost_scene(const ResultSet& set) {

@@ -22,9 +22,14 @@ struct OrderVerdict {
     int fitted = 0, exact = 0, insufficient = 0, no_convergence = 0;
     double stuck_lo = NAN, stuck_hi = NAN;  // relative error at the finest step where it does not converge
     int scenes() const { return fitted + exact + insufficient + no_convergence; }
-    // Every judged scene fitted at least `order` - order_tolerance, or exact.
+    // Every judged scene fitted at least `order` - order_tolerance, exact, or stuck at a relative
+    // error below round_off_plateau.
     bool at_least(int order) const;
 };
+
+// An error that stops falling below this, relative to |w_ref|, is round-off accumulating over the
+// run (10 eps per step reach 1e-9 in 5e5 steps), not a scheme short of its order.
+inline constexpr double round_off_plateau = 1e-8;
 
 enum class EnergyVerdict { none, kept, bounded, drifting, not_judged };
 
