@@ -98,3 +98,21 @@ TEST_CASE("granular scenes: a box 65 536 stones wide is packed (its stones per l
         CHECK((b.position[1] - b.position[0]).norm() > 2.0 * reach);  // side by side in the first row, apart
     }
 }
+
+TEST_CASE("granular scenes: the quick shear box peaks, with a friction angle of 35 to 60 degrees rising in stress", "[slow]") {
+    // Issue 36's range for ballast in a direct shear test (35-60 degrees); the seed's three normal stresses.
+    double last_peak = 0;
+    for (const double sigma : {27e3, 51e3, 75e3}) {
+        ParamOverrides params = make_scene("direct_shear")->quick_params();  // what --quick sets
+        params.push_back({"normal_stress", {sigma}});
+        const RunResult r = run_one({"direct_shear", "richardson", 2e-5, 0.0, params}, {.measure_time = false});
+        INFO("sigma " << sigma << ": " << r.failure);
+        const double peak = r.value("shear_stress_peak"), sigma_held = r.value("normal_stress_mean");
+        const double angle = std::atan(peak / sigma_held) * 180 / M_PI;
+        CHECK(angle > 35.0);
+        CHECK(angle < 60.0);
+        CHECK(r.value("shear_stress_final") < peak);  // the peak was passed, not cut off
+        CHECK(peak > last_peak);
+        last_peak = peak;
+    }
+}
