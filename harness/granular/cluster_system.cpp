@@ -92,10 +92,6 @@ void ClusterSystem::evaluate(Bodies& b, double t) const {
         b.force.set(body, b.force[body] + force);
         b.torque.set(body, b.torque[body] + (point - b.position[body]).cross(force));
     };
-    auto spring_of = [&](std::uint64_t key) -> Vec3 {
-        const auto found = springs_.find(key);
-        return found == springs_.end() ? Vec3::Zero() : found->second;
-    };
 
     // Two levels: stones whose bounding spheres overlap (linked cells over the stones' centres),
     // then their spheres. A cell of the largest sphere's size would hold dozens of the small
@@ -106,7 +102,9 @@ void ClusterSystem::evaluate(Bodies& b, double t) const {
     auto sphere_pair = [&](std::size_t i, std::size_t j) {
         const std::size_t a = std::min(i, j), c = std::max(i, j);  // the normal from the lower index
         const Vec3 d = centres_[c] - centres_[a];
-        const double distance = d.norm(), overlap = radii_[a] + radii_[c] - distance;
+        const double touch = radii_[a] + radii_[c];
+        if (d.squaredNorm() > touch * touch * (1.0 + 1e-9)) return;  // apart, whatever the round-off: no square root
+        const double distance = d.norm(), overlap = touch - distance;
         if (!(overlap > 0.0) || distance == 0.0) return;
         const Vec3 n = d / distance;
         const Vec3 point = centres_[a] + (radii_[a] - 0.5 * overlap) * n;
@@ -115,9 +113,9 @@ void ClusterSystem::evaluate(Bodies& b, double t) const {
         const double radius = radii_[a] * radii_[c] / (radii_[a] + radii_[c]);
         const double mass = b.mass[body_a] * b.mass[body_c] / (b.mass[body_a] + b.mass[body_c]);
         const std::uint64_t key = (static_cast<std::uint64_t>(a) << 32) | c;
-        Vec3 spring = spring_of(key);
+        Vec3 spring = springs_.find(key);
         const Vec3 f = law_.force(overlap, n, v, radius, mass, spring, elapsed, friction_);
-        next_springs_[key] = spring;
+        next_springs_.put(key, spring);
         apply(body_c, point, f);
         apply(body_a, point, -f);
         elastic_energy_ += law_.normal_energy(overlap, radius);
@@ -126,53 +124,66 @@ void ClusterSystem::evaluate(Bodies& b, double t) const {
         const double reach_p = reach_of(p), reach_q = reach_of(q);
         if ((positions_[p] - positions_[q]).squaredNorm() >= (reach_p + reach_q) * (reach_p + reach_q)) return;
         const std::size_t p_end = first_sphere_[p] + sphere_count_of(p), q_end = first_sphere_[q] + sphere_count_of(q);
+        // The spheres of q within p's reach (with a margin far above round-off): no other can
+        // touch a sphere of p. The pairs keep their order, and with it the sums' rounding.
+        near_spheres_.clear();
+        for (std::size_t j = first_sphere_[q]; j < q_end; ++j) {
+            const double near = radii_[j] + reach_p;
+            if (!((centres_[j] - positions_[p]).squaredNorm() > near * near * (1.0 + 1e-9))) near_spheres_.push_back(j);
+        }
+        if (near_spheres_.empty()) return;
         for (std::size_t i = first_sphere_[p]; i < p_end; ++i) {
             const double near = radii_[i] + reach_q;
             if ((centres_[i] - positions_[q]).squaredNorm() >= near * near) continue;
-            for (std::size_t j = first_sphere_[q]; j < q_end; ++j) sphere_pair(i, j);
+            for (const std::size_t j : near_spheres_) sphere_pair(i, j);
         }
     });
 
-    for (std::size_t s = 0; s < centres_.size(); ++s) {
-        for (std::size_t w = 0; w < walls.size(); ++w) {
-            const Wall& wall = walls[w];
-            if (!wall.region.contains(centres_[s])) continue;
-            const double height = wall.normal.dot(centres_[s]) - wall.offset;
-            Vec3 n = wall.normal;
-            double gap = height;
-            if (wall.hole && wall.hole->contains(centres_[s])) {
-                // Over the opening: the sphere meets the opening's rim, at the rim point nearest
-                // its centre, so that the force is continuous as the sphere crosses the rim.
-                if (!(std::abs(height) < radii_[s])) continue;
-                Vec3 rim = centres_[s] - height * wall.normal;
-                int axis = 0;
-                double nearest = INFINITY, edge = 0;
-                for (int k = 0; k < 3; ++k) {
-                    if (std::abs(wall.normal[k]) > 0.5) continue;  // the plane's own axis
-                    for (const double bound : {wall.hole->min()[k], wall.hole->max()[k]})
-                        if (std::abs(rim[k] - bound) < nearest) nearest = std::abs(rim[k] - bound), axis = k, edge = bound;
+    for (std::size_t body = 0, s = 0; body < b.size(); ++body) {
+        // Only walls within the stone's reach of its centre can touch one of its spheres (a
+        // margin far above round-off keeps every contact): most stones are near no wall.
+        near_walls_.clear();
+        for (std::size_t w = 0; w < walls.size(); ++w)
+            if (!(std::abs(walls[w].normal.dot(b.position[body]) - walls[w].offset) > reach_of(body) * (1.0 + 1e-9))) near_walls_.push_back(w);
+        for (const std::size_t end = s + sphere_count_of(body); s < end; ++s)
+            for (const std::size_t w : near_walls_) {
+                const Wall& wall = walls[w];
+                if (!wall.region.contains(centres_[s])) continue;
+                const double height = wall.normal.dot(centres_[s]) - wall.offset;
+                Vec3 n = wall.normal;
+                double gap = height;
+                if (wall.hole && wall.hole->contains(centres_[s])) {
+                    // Over the opening: the sphere meets the opening's rim, at the rim point nearest
+                    // its centre, so that the force is continuous as the sphere crosses the rim.
+                    if (!(std::abs(height) < radii_[s])) continue;
+                    Vec3 rim = centres_[s] - height * wall.normal;
+                    int axis = 0;
+                    double nearest = INFINITY, edge = 0;
+                    for (int k = 0; k < 3; ++k) {
+                        if (std::abs(wall.normal[k]) > 0.5) continue;  // the plane's own axis
+                        for (const double bound : {wall.hole->min()[k], wall.hole->max()[k]})
+                            if (std::abs(rim[k] - bound) < nearest) nearest = std::abs(rim[k] - bound), axis = k, edge = bound;
+                    }
+                    rim[axis] = edge;
+                    const Vec3 d = centres_[s] - rim;
+                    gap = d.norm();
+                    if (!(gap > 0.0)) continue;
+                    n = d / gap;
+                } else if (!(height > 0.0)) {
+                    continue;  // behind the wall
                 }
-                rim[axis] = edge;
-                const Vec3 d = centres_[s] - rim;
-                gap = d.norm();
-                if (!(gap > 0.0)) continue;
-                n = d / gap;
-            } else if (!(height > 0.0)) {
-                continue;  // behind the wall
+                if (!(gap < radii_[s])) continue;
+                const double overlap = radii_[s] - gap;
+                const Vec3 point = centres_[s] - (radii_[s] - 0.5 * overlap) * n;
+                const Vec3 v = point_velocity(body, point) - wall.velocity;
+                const std::uint64_t key = (static_cast<std::uint64_t>(s) << 32) | (sphere_count + w);
+                Vec3 spring = springs_.find(key);
+                const Vec3 f = law_.force(overlap, n, v, radii_[s], b.mass[body], spring, elapsed, wall.friction);
+                next_springs_.put(key, spring);
+                apply(body, point, f);
+                wall_loads_[w] -= f;
+                elastic_energy_ += law_.normal_energy(overlap, radii_[s]);
             }
-            if (!(gap < radii_[s])) continue;
-            const double overlap = radii_[s] - gap;
-            const Vec3 point = centres_[s] - (radii_[s] - 0.5 * overlap) * n;
-            const std::size_t body = owner_[s];
-            const Vec3 v = point_velocity(body, point) - wall.velocity;
-            const std::uint64_t key = (static_cast<std::uint64_t>(s) << 32) | (sphere_count + w);
-            Vec3 spring = spring_of(key);
-            const Vec3 f = law_.force(overlap, n, v, radii_[s], b.mass[body], spring, elapsed, wall.friction);
-            next_springs_[key] = spring;
-            apply(body, point, f);
-            wall_loads_[w] -= f;
-            elastic_energy_ += law_.normal_energy(overlap, radii_[s]);
-        }
     }
     springs_.swap(next_springs_);
 }

@@ -8,11 +8,11 @@
 #include "harness/granular/ballast_shapes.hpp"
 #include "harness/granular/hertz_mindlin.hpp"
 #include "harness/granular/linked_cells.hpp"
+#include "harness/granular/spring_table.hpp"
 
 #include <Eigen/Geometry>
 #include <cstdint>
 #include <optional>
-#include <unordered_map>
 #include <vector>
 
 namespace rotbench {
@@ -70,11 +70,11 @@ private:
     std::size_t sphere_count_of(std::size_t body) const { return shapes_[static_cast<std::size_t>(shape_of_[body])].spheres.size(); }
 
     // The state of the contacts between evaluations, and scratch space reused at every step.
-    mutable std::unordered_map<std::uint64_t, Vec3> springs_, next_springs_;
+    mutable SpringTable springs_, next_springs_;
     mutable double last_time_ = NAN, last_step_ = 0;
     mutable std::vector<Vec3> wall_loads_, centres_, positions_;
     mutable std::vector<double> radii_;
-    mutable std::vector<std::size_t> owner_;
+    mutable std::vector<std::size_t> owner_, near_walls_, near_spheres_;
     mutable double elastic_energy_ = 0;
     mutable LinkedCells cells_;
 };
