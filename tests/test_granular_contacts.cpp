@@ -242,3 +242,35 @@ TEST_CASE("granular contacts: a sphere crossing the rim of a wall's opening feel
     CHECK(over.norm() < outside.norm());
     CHECK(force_at(2.0 * R, z).norm() == 0.0);  // clear of the rim: it falls through
 }
+
+TEST_CASE("granular contacts: a sphere passing the edge of a plate feels no jump in force") {
+    const double R = 0.01;
+    ClusterSystem system({cluster_shape({{Vec3::Zero(), R}}, rho)}, ContactMaterial{}, 0.0, Vec3::Zero());
+    Wall table;  // the plate: x in [-1, 0]
+    table.region = Eigen::AlignedBox3d(Vec3(-1.0, -1.0, -INFINITY), Vec3(0.0, 1.0, INFINITY));
+    table.plate = true;
+    system.walls.push_back(table);
+    auto force_at = [&](double x, double z) {
+        Bodies b = system.make_bodies({0}, {Vec3(x, 0.0, z)}, {Quat::Identity()});
+        system.evaluate(b, 0.0);
+        return b.force[0];
+    };
+    const double z = 0.6 * R;  // 0.4 R overlap with the plate
+    // Either side of the edge, 1e-9 m apart: the same force, to the bound of the rim's test above.
+    const Vec3 on = force_at(-1e-9, z), beside = force_at(1e-9, z);
+    CHECK(on.z() > 0.0);
+    CHECK((on - beside).norm() < 1e-6 * on.norm());
+    // Beyond the edge it pushes the sphere outwards and up, less than the plate did; from below,
+    // outwards and down; clear of it, not at all.
+    const Vec3 over = force_at(0.5 * R, z), under = force_at(0.5 * R, -z);
+    CHECK(over.x() > 0.0);
+    CHECK(over.z() > 0.0);
+    CHECK(over.norm() < on.norm());
+    CHECK(under.x() > 0.0);
+    CHECK(under.z() < 0.0);
+    CHECK(force_at(2.0 * R, z).norm() == 0.0);
+    CHECK(force_at(-0.5, -z).norm() == 0.0);  // under the plate, away from its edge: behind the wall
+    // Without `plate` the wall ends at its region: the sphere beside it feels nothing.
+    system.walls[0].plate = false;
+    CHECK(force_at(0.5 * R, z).norm() == 0.0);
+}

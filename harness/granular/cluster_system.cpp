@@ -148,11 +148,19 @@ void ClusterSystem::evaluate(Bodies& b, double t) const {
         for (const std::size_t end = s + sphere_count_of(body); s < end; ++s)
             for (const std::size_t w : near_walls_) {
                 const Wall& wall = walls[w];
-                if (!wall.region.contains(centres_[s])) continue;
                 const double height = wall.normal.dot(centres_[s]) - wall.offset;
                 Vec3 n = wall.normal;
                 double gap = height;
-                if (wall.hole && wall.hole->contains(centres_[s])) {
+                if (!wall.region.contains(centres_[s])) {
+                    if (!wall.plate) continue;
+                    // Beside a plate: the sphere meets its edge, so that the force does not vanish
+                    // at once as the sphere's centre passes the edge.
+                    const Vec3 edge = (centres_[s] - height * wall.normal).cwiseMax(wall.region.min()).cwiseMin(wall.region.max());
+                    const Vec3 d = centres_[s] - edge;
+                    gap = d.norm();
+                    if (!(gap > 0.0)) continue;
+                    n = d / gap;
+                } else if (wall.hole && wall.hole->contains(centres_[s])) {
                     // Over the opening: the sphere meets the opening's rim, at the rim point nearest
                     // its centre, so that the force is continuous as the sphere crosses the rim.
                     if (!(std::abs(height) < radii_[s])) continue;

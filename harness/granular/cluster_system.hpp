@@ -21,6 +21,8 @@ namespace rotbench {
 // (on the side of the normal) and closer than its radius. `hole` is an opening (a silo's
 // orifice), a box whose sides are parallel to the wall's normal, which must be a coordinate
 // axis: a sphere whose centre lies in it meets the opening's rim instead, from either side.
+// A `plate` is a wall of finite extent (a table): a sphere whose centre lies beside its region
+// meets the plate's edge, the nearest point of the plate.
 struct Wall {
     Vec3 normal = Vec3::UnitZ();  // unit, towards the particles
     double offset = 0;            // the plane: normal . x = offset
@@ -28,6 +30,7 @@ struct Wall {
     Vec3 velocity = Vec3::Zero();  // a moving wall (the shear box's lower half, a lid)
     Eigen::AlignedBox3d region{Vec3::Constant(-INFINITY), Vec3::Constant(INFINITY)};
     std::optional<Eigen::AlignedBox3d> hole;
+    bool plate = false;
 };
 
 class ClusterSystem {
