@@ -85,6 +85,20 @@ double restitution_of_law(const HertzMindlin& law, double R, double m, double v0
     }
 }
 
+// One sphere of radius R and a wall, without gravity: the force on the sphere at (x, 0, z).
+struct SphereAndWall {
+    explicit SphereAndWall(double R, const Wall& wall)
+        : system({cluster_shape({{Vec3::Zero(), R}}, rho)}, ContactMaterial{}, 0.0, Vec3::Zero()) {
+        system.walls.push_back(wall);
+    }
+    Vec3 force_at(double x, double z) {
+        Bodies b = system.make_bodies({0}, {Vec3(x, 0.0, z)}, {Quat::Identity()});
+        system.evaluate(b, 0.0);
+        return b.force[0];
+    }
+    ClusterSystem system;
+};
+
 }  // namespace
 
 TEST_CASE("granular contacts: a sphere resting on a plane sinks by the static Hertz overlap") {
@@ -220,15 +234,10 @@ TEST_CASE("granular contacts: two colliding clusters keep their momentum") {
 
 TEST_CASE("granular contacts: a sphere crossing the rim of a wall's opening feels no jump in force") {
     const double R = 0.01;
-    ClusterSystem system({cluster_shape({{Vec3::Zero(), R}}, rho)}, ContactMaterial{}, 0.0, Vec3::Zero());
     Wall bottom;
     bottom.hole = Eigen::AlignedBox3d(Vec3(0.0, -1.0, -INFINITY), Vec3(1.0, 1.0, INFINITY));  // the opening: x in [0, 1]
-    system.walls.push_back(bottom);
-    auto force_at = [&](double x, double z) {
-        Bodies b = system.make_bodies({0}, {Vec3(x, 0.0, z)}, {Quat::Identity()});
-        system.evaluate(b, 0.0);
-        return b.force[0];
-    };
+    SphereAndWall world(R, bottom);
+    auto force_at = [&](double x, double z) { return world.force_at(x, z); };
     const double z = 0.6 * R;  // 0.4 R overlap with the plate
     // Either side of the rim, 1e-9 m apart: the same force to the change of the overlap's
     // geometry over that distance (relative 1e-9 / (0.4 R) ~ 3e-7, times 3/2 for Hertz).
@@ -245,16 +254,11 @@ TEST_CASE("granular contacts: a sphere crossing the rim of a wall's opening feel
 
 TEST_CASE("granular contacts: a sphere passing the edge of a plate feels no jump in force") {
     const double R = 0.01;
-    ClusterSystem system({cluster_shape({{Vec3::Zero(), R}}, rho)}, ContactMaterial{}, 0.0, Vec3::Zero());
     Wall table;  // the plate: x in [-1, 0]
     table.region = Eigen::AlignedBox3d(Vec3(-1.0, -1.0, -INFINITY), Vec3(0.0, 1.0, INFINITY));
     table.plate = true;
-    system.walls.push_back(table);
-    auto force_at = [&](double x, double z) {
-        Bodies b = system.make_bodies({0}, {Vec3(x, 0.0, z)}, {Quat::Identity()});
-        system.evaluate(b, 0.0);
-        return b.force[0];
-    };
+    SphereAndWall world(R, table);
+    auto force_at = [&](double x, double z) { return world.force_at(x, z); };
     const double z = 0.6 * R;  // 0.4 R overlap with the plate
     // Either side of the edge, 1e-9 m apart: the same force, to the bound of the rim's test above.
     const Vec3 on = force_at(-1e-9, z), beside = force_at(1e-9, z);
@@ -271,6 +275,6 @@ TEST_CASE("granular contacts: a sphere passing the edge of a plate feels no jump
     CHECK(force_at(2.0 * R, z).norm() == 0.0);
     CHECK(force_at(-0.5, -z).norm() == 0.0);  // under the plate, away from its edge: behind the wall
     // Without `plate` the wall ends at its region: the sphere beside it feels nothing.
-    system.walls[0].plate = false;
+    world.system.walls[0].plate = false;
     CHECK(force_at(0.5 * R, z).norm() == 0.0);
 }
