@@ -246,5 +246,13 @@ TEST_CASE("missing folders of gate --junit and reference --out are made, as --ou
     const Cli reference = binary({"reference", "--scene", "cylinder_free", "--samples", "10", "--out", (dir / "refs" / "r.csv").string()});
     CHECK(reference.status == 0);
     CHECK(fs::is_regular_file(dir / "refs" / "r.csv"));
+    // Made when written, not when checked: a command refused for another output leaves none.
+    std::ofstream(dir / "notes.md") << "kept\n";
+    const Cli refused = binary({"gate", DEFAULT_GATE, "--schemes", "no_gyro", "--junit", (dir / "new" / "sub" / "gate.xml").string(), "--summary",
+                                (dir / "notes.md").string(), "--overwrite"});
+    CHECK(refused.status == 2);
+    CHECK(refused.err.find("is not a file rotbench wrote") != std::string::npos);
+    CHECK_FALSE(fs::exists(dir / "new"));
+    CHECK(read(dir / "notes.md") == "kept\n");
     fs::remove_all(dir);
 }

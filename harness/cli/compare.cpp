@@ -46,8 +46,8 @@ public:
         result.verdicts = c.verdicts;
         result.warnings = c.notes;
         how.out << gate_summary(result);
-        if (!junit_.empty()) write_file_atomically(junit_, gate_junit(result, base_));
-        if (!summary_.empty()) write_file_atomically(summary_, gate_markdown(result, "compare", base_ + " -> " + now_));
+        if (!junit_.empty()) write_output_file(junit_, gate_junit(result, base_));
+        if (!summary_.empty()) write_output_file(summary_, gate_markdown(result, "compare", base_ + " -> " + now_));
         if (dir) {
             dir->write("compare.csv", compare_csv(c));
             dir->write("summary.json", gate_summary_json(result, base_ + " -> " + now_, provenance()));

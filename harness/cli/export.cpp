@@ -58,7 +58,7 @@ struct ExportOptions {
         check_output_file(out, "--out", overwrite, trajectory_header);
     }
     void write(const std::vector<std::vector<double>>& rows, std::ostream& log) const {
-        write_file_atomically(out, table_csv(split_commas(trajectory_header), rows));
+        write_output_file(out, table_csv(split_commas(trajectory_header), rows));
         log << "wrote " << out << "\n";
     }
 };

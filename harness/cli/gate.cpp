@@ -113,11 +113,11 @@ public:
         if (std::getenv("GITHUB_ACTIONS") && std::string(std::getenv("GITHUB_ACTIONS")) == "true") how.out << gate_annotations(result);
         const std::string json = gate_summary_json(result, file_, provenance());
         if (!junit_.empty()) {
-            write_file_atomically(junit_, gate_junit(result, file_));
-            write_file_atomically(fs::path(junit_).parent_path() / "summary.json", json);
+            write_output_file(junit_, gate_junit(result, file_));
+            write_output_file(fs::path(junit_).parent_path() / "summary.json", json);
         }
         const std::string markdown = gate_markdown(result, "gate", file_);
-        if (!summary_.empty()) write_file_atomically(summary_, markdown);
+        if (!summary_.empty()) write_output_file(summary_, markdown);
         if (!step.empty()) append_to_file(step, markdown);
         if (dir) {
             dir->write("gate.csv", gate_csv(result));

@@ -229,26 +229,38 @@ void check_distinct_outputs(const std::vector<std::pair<std::string, fs::path>>&
 
 void check_output_file(const fs::path& file, const std::string& option, bool overwrite, const std::string& signature) {
     std::error_code ec;
-    const fs::path parent = file.parent_path();
-    if (!parent.empty() && !fs::exists(fs::symlink_status(parent, ec))) {  // made as --out makes its folder
-        fs::create_directories(parent, ec);
-        if (ec) throw InputError(option + " " + file.string() + ": cannot create the directory " + parent.string() + ": " + ec.message());
-    }
-    if (!parent.empty() && !fs::is_directory(parent, ec))
+    const fs::path parent = file.parent_path().empty() ? fs::path(".") : file.parent_path();
+    // The nearest folder that exists. Missing ones are made only when the file is written
+    // (write_output_file): a command refused after this check leaves none behind.
+    fs::path existing = parent;
+    while (!existing.empty() && !fs::exists(fs::symlink_status(existing, ec))) existing = existing.parent_path();
+    if (existing.empty()) existing = ".";
+    if (existing != parent) {
+        if (!fs::is_directory(existing, ec))
+            throw InputError(option + " " + file.string() + ": cannot create the directory " + parent.string() + ": " + existing.string() +
+                             " is not a directory");
+    } else if (!fs::is_directory(parent, ec)) {
         throw InputError(option + " " + file.string() + ": " + parent.string() + " is not a directory");
-    if (fs::exists(file, ec)) {
+    } else if (fs::exists(file, ec)) {
         if (!fs::is_regular_file(file, ec)) throw InputError(option + " " + file.string() + ": not a regular file");
         if (!overwrite) throw InputError(option + " " + file.string() + " exists; pass --overwrite to replace it");
         const auto head = read_file(file).value_or("");
         if (head.rfind(signature, 0) != 0)
             throw InputError(option + " " + file.string() + " exists and is not a file rotbench wrote; it is never replaced");
     }
-    // The directory must take a new file: probed now, not after the work.
-    const fs::path probe = (parent.empty() ? fs::path(".") : parent) / fmt::format(".rotbench-probe-{}", ::getpid());
+    // The nearest folder must take a new entry: probed now, not after the work.
+    const fs::path probe = existing / fmt::format(".rotbench-probe-{}", ::getpid());
     const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
-    if (fd < 0) throw InputError(option + " " + file.string() + ": cannot write in " + (parent.empty() ? "." : parent.string()) + ": " + std::strerror(errno));
+    if (fd < 0) throw InputError(option + " " + file.string() + ": cannot write in " + existing.string() + ": " + std::strerror(errno));
     ::close(fd);
     fs::remove(probe, ec);
+}
+
+void write_output_file(const fs::path& file, const std::string& content) {
+    std::error_code ec;
+    if (!file.parent_path().empty()) fs::create_directories(file.parent_path(), ec);  // made as --out makes its folder
+    if (ec) throw OutputError("cannot create the directory " + file.parent_path().string() + ": " + ec.message());
+    write_file_atomically(file, content);
 }
 
 }  // namespace rotbench

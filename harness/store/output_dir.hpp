@@ -60,8 +60,10 @@ private:
 
 // A single output file (--junit, --summary, reference and trajectory --out): refused when it
 // exists, unless overwrite and it begins with `signature` (the start of a file of this kind
-// that rotbench writes); so no other file is ever replaced.
+// that rotbench writes); so no other file is ever replaced. Checked before the work, written
+// after it by write_output_file, which makes its missing folders.
 void check_output_file(const std::filesystem::path& file, const std::string& option, bool overwrite, const std::string& signature);
+void write_output_file(const std::filesystem::path& file, const std::string& content);
 
 // Refused (InputError, one line) when two of a command's outputs, each (option, file), are one
 // file: the one written last would silently take the other's place. An empty file is not given.
