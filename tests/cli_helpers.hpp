@@ -115,4 +115,20 @@ inline void write(const fs::path& p, const std::string& text) {
     std::ofstream(p) << text;
 }
 
+// The default gate's [[check]] tables that judge CPU-time ratios (max_cost_ratio) alone, or
+// (cost = false) everything else, its header included: ratios belong to the CI step that runs
+// the whole gate, not to unit tests sharing a machine.
+inline std::string default_gate_checks(bool cost) {
+    const std::string text = read(DEFAULT_GATE);
+    std::string kept;
+    for (std::size_t at = 0; at < text.size();) {
+        const std::size_t next = text.find("[[check]]", at + 1);
+        const std::string part = text.substr(at, next == std::string::npos ? std::string::npos : next - at);
+        const bool judges_cost = part.find("max_cost_ratio") != std::string::npos;
+        if (cost ? part.rfind("[[check]]", 0) == 0 && judges_cost : !judges_cost) kept += part;
+        at = next == std::string::npos ? text.size() : next;
+    }
+    return kept;
+}
+
 }  // namespace rotbench::test

@@ -31,19 +31,6 @@ private:
     std::vector<std::thread> threads_;
 };
 
-// The [[check]] tables of the default gate that judge cost.
-std::string default_cost_checks() {
-    const std::string text = read(DEFAULT_GATE);
-    std::string kept;
-    for (std::size_t at = text.find("[[check]]"); at != std::string::npos;) {
-        const std::size_t next = text.find("[[", at + 1);
-        const std::string part = text.substr(at, next == std::string::npos ? std::string::npos : next - at);
-        if (part.find("max_cost_ratio") != std::string::npos) kept += part;
-        at = next;
-    }
-    return kept;
-}
-
 }  // namespace
 
 TEST_CASE("cost: a copy of direct passes and the same kernel made twice fails, with every core busy") {
@@ -64,7 +51,7 @@ TEST_CASE("cost: a copy of direct passes and the same kernel made twice fails, w
 TEST_CASE("cost: the default gate's cost checks pass on a sound build with every core busy, plug-ins included") {
     const fs::path dir = fresh_dir("cost_default");
     fs::create_directories(dir);
-    const std::string checks = default_cost_checks();
+    const std::string checks = default_gate_checks(true);
     REQUIRE(checks.find("max_cost_ratio") != std::string::npos);
     write(dir / "cost.toml", checks);
     const BusyMachine busy;

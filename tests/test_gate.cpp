@@ -33,21 +33,11 @@ bool valid_json(const fs::path& file) {
                         file.string()}) == 0;
 }
 
-// The default gate without its cost checks: CPU-time ratios belong to the CI step that runs
-// the whole gate, not to unit tests sharing a machine.
+// The default gate without its cost checks, as a file.
 std::string default_gate_without_timing() {
     static const std::string path = [] {
-        const std::string text = read(DEFAULT_GATE);
-        std::string kept;
-        std::size_t at = 0;
-        while (at < text.size()) {
-            const std::size_t next = text.find("[[check]]", at + 1);
-            const std::string part = text.substr(at, next == std::string::npos ? std::string::npos : next - at);
-            if (part.find("max_cost_ratio") == std::string::npos) kept += part;
-            at = next == std::string::npos ? text.size() : next;
-        }
         const fs::path file = fs::temp_directory_path() / ("rotbench_default_gate_" + std::to_string(::getpid()) + ".toml");
-        write(file, kept);
+        write(file, default_gate_checks(false));
         return file.string();
     }();
     return path;
