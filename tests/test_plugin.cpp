@@ -72,6 +72,8 @@ TEST_CASE("plug-in: a run remembers what it ran, so report and merge describe a 
     const std::string recorded = read(dir / "run" / "schemes.json");
     CHECK_THAT(recorded, Catch::Contains("\"hash\"") && Catch::Contains("test_plugin_end_velocity_zvw") &&
                              Catch::Contains(ROTBENCH_PLUGIN_BUILD));  // built as this rotbench was
+    // A built-in's registration is named within the source tree, the same on every machine.
+    CHECK_THAT(recorded, Catch::Contains("\"declared_at\": \"schemes/direct.cpp:"));
     // A stability study written into the same folder, then the report re-rendered, all without --plugin.
     REQUIRE(binary({"--plugin", PLUGIN_END_VELOCITY_ZVW, "stability", "--schemes", "zvw_end_velocity", "--scenes", "sphere_pair",
                     "--zeta", "0", "--out", stab, "--overwrite", "--quiet"})
