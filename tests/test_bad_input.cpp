@@ -248,8 +248,8 @@ TEST_CASE("missing folders of gate --junit and reference --out are made, as --ou
     CHECK(fs::is_regular_file(dir / "refs" / "r.csv"));
     // Made when written, not when checked: a command refused for another output leaves none.
     std::ofstream(dir / "notes.md") << "kept\n";
-    const Cli refused = binary({"gate", DEFAULT_GATE, "--schemes", "no_gyro", "--junit", (dir / "new" / "sub" / "gate.xml").string(), "--summary",
-                                (dir / "notes.md").string(), "--overwrite"});
+    const Cli refused = binary({"gate", DEFAULT_GATE, "--schemes", "no_gyro", "--junit", (dir / "new" / "sub" / "gate.xml").string(),
+                                "--summary", (dir / "notes.md").string(), "--overwrite"});
     CHECK(refused.status == 2);
     CHECK(refused.err.find("is not a file rotbench wrote") != std::string::npos);
     CHECK_FALSE(fs::exists(dir / "new"));

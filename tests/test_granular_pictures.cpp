@@ -91,7 +91,8 @@ TEST_CASE("granular pictures: the silo's curve and snapshots are written beside 
     const fs::path dir = fresh_dir("granular_pictures");
     // 0.06 s of a small silo, opened at 0.02 s: a curve of a few rows and pictures at three instants.
     const Cli r = cli({"run", "--scenes", "silo_discharge", "--schemes", "direct", "--quick", "--t-end", "0.06", "--set",
-                       "silo_discharge.fill_time=0.02", "--set", "silo_discharge.clusters=20", "--set", "silo_discharge.orifice=0.25", "--out", dir.string(), "--quiet"});
+                       "silo_discharge.fill_time=0.02", "--set", "silo_discharge.clusters=20", "--set", "silo_discharge.orifice=0.25",
+                       "--out", dir.string(), "--quiet"});
     REQUIRE(r.status == 0);
     const std::string curve = read(dir / "series" / "curve_silo_discharge_direct_dt2e-05.csv");
     CHECK(curve.rfind("t_open,mass_left\n", 0) == 0);

@@ -127,8 +127,8 @@ TEST_CASE("granular scenes: the full-size silo's heap stands at 30 to 45 degrees
     const fs::path dir = fresh_dir("silo_laws");
     for (const double width : widths) {
         const fs::path out = dir / std::to_string(width);
-        const Cli r = cli({"run", "--scenes", "silo_discharge", "--schemes", "richardson", "--dt", "2e-5", "--ensemble", "3",
-                           "--set", "silo_discharge.orifice=" + std::to_string(width), "--out", out.string(), "--quiet"});
+        const Cli r = cli({"run", "--scenes", "silo_discharge", "--schemes", "richardson", "--dt", "2e-5", "--ensemble", "3", "--set",
+                           "silo_discharge.orifice=" + std::to_string(width), "--out", out.string(), "--quiet"});
         REQUIRE(r.status == 0);
         const std::vector<RunResult> runs = read_results(out);
         INFO("orifice " << width);

@@ -144,7 +144,8 @@ void ClusterSystem::evaluate(Bodies& b, double t) const {
         // margin far above round-off keeps every contact): most stones are near no wall.
         near_walls_.clear();
         for (std::size_t w = 0; w < walls.size(); ++w)
-            if (!(std::abs(walls[w].normal.dot(b.position[body]) - walls[w].offset) > reach_of(body) * (1.0 + 1e-9))) near_walls_.push_back(w);
+            if (!(std::abs(walls[w].normal.dot(b.position[body]) - walls[w].offset) > reach_of(body) * (1.0 + 1e-9)))
+                near_walls_.push_back(w);
         for (const std::size_t end = s + sphere_count_of(body); s < end; ++s)
             for (const std::size_t w : near_walls_) {
                 const Wall& wall = walls[w];

@@ -53,10 +53,12 @@ public:
         params.set("clusters", {1100});
         params.declare("width", {0.4}, "m", "inner side of the square silo");
         params.declare("orifice", {0.2}, "m", "side of the square orifice at the centre of the bottom (4 mean stone sizes)");
-        params.declare("drop", {0.35}, "m", "height of the silo's bottom above the table (room for the heap: it must not reach the orifice)");
+        params.declare("drop", {0.35}, "m",
+                       "height of the silo's bottom above the table (room for the heap: it must not reach the orifice)");
         params.declare("wall_friction", {0.0}, "-", "friction coefficient with the silo (seed Table 3)");
         params.declare("floor_friction", {0.6}, "-", "friction coefficient with the table and the floor (seed Table 3)");
-        params.declare("table", {0.7}, "m", "side of the square table under the orifice the heap forms on; stones that roll off it fall to the floor");
+        params.declare("table", {0.7}, "m",
+                       "side of the square table under the orifice the heap forms on; stones that roll off it fall to the floor");
         params.declare("spill", {0.3}, "m", "depth of the floor below the table");
         params.declare("fill_time", {2.0}, "s", "time the stones are given to settle before the orifice opens");
         params.declare("discharged", {0.95}, "-", "fraction of the mass that leaves whose leaving ends the discharge (discharge_time)");
@@ -91,8 +93,10 @@ public:
         // silo is not under a shelf (and the pictures draw the silo as it is).
         system_->walls.push_back({Vec3::UnitZ(), 0.0, wall_friction, Vec3::Zero(), {Vec3(-h, -h, -INFINITY), Vec3(h, h, INFINITY)}, std::nullopt});
         const double t = 0.5 * table;
-        system_->walls.push_back({Vec3::UnitZ(), -drop_, floor_friction, Vec3::Zero(), {Vec3(-t, -t, -INFINITY), Vec3(t, t, INFINITY)}, std::nullopt, true});
-        system_->walls.push_back({Vec3::UnitZ(), -drop_ - spill, floor_friction, Vec3::Zero(), {Vec3::Constant(-INFINITY), Vec3::Constant(INFINITY)}, std::nullopt});
+        const Eigen::AlignedBox3d table_top(Vec3(-t, -t, -INFINITY), Vec3(t, t, INFINITY));
+        const Eigen::AlignedBox3d everywhere(Vec3::Constant(-INFINITY), Vec3::Constant(INFINITY));
+        system_->walls.push_back({Vec3::UnitZ(), -drop_, floor_friction, Vec3::Zero(), table_top, std::nullopt, true});
+        system_->walls.push_back({Vec3::UnitZ(), -drop_ - spill, floor_friction, Vec3::Zero(), everywhere, std::nullopt});
     }
 
     Bodies initial_state() const override {
