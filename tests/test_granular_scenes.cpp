@@ -118,11 +118,12 @@ TEST_CASE("granular scenes: the quick shear box peaks, with a friction angle of 
 }
 
 TEST_CASE("granular scenes: the full-size silo's heap stands at 30 to 45 degrees and its flow follows Beverloo's law", "[study]") {
-    // About 50 minutes on two cores: 3 packings at each of 4 orifice widths, 510 CPU-s a run.
+    // About 50 minutes on two cores: 3 packings at each of 4 orifice widths, 510 CPU-s a run. The
+    // widths are those that flow: at 0.175 m (3.7 stone sizes) two packings of three clog.
     // The bounds are issue 36's: railway ballast's angle of repose (35-45 degrees; the seed's
     // silo 35.8-37.6) widened to 30; Beverloo's W ~ (D - k d)^(5/2), so W^(2/5) is linear in D
     // within 3 % on the ensemble means, vanishing at one to three stone sizes d.
-    const std::vector<double> widths = {0.175, 0.2, 0.225, 0.25};
+    const std::vector<double> widths = {0.2, 0.225, 0.25, 0.275};
     std::vector<double> flow_root;  // W^(2/5)
     const fs::path dir = fresh_dir("silo_laws");
     for (const double width : widths) {
