@@ -35,6 +35,6 @@ case "${1:-build}" in
           benchmarks/cost.py "$build" out/default          # the quick cost table (about 30 s)
           "$build/rotbench" report out/default
           echo "setup: report written to out/default/report.md" ;;
-  test)   ctest --test-dir "$build" --output-on-failure --parallel "$(nproc)" --label-exclude slow ;;
+  test)   ctest --test-dir "$build" --output-on-failure --parallel "$(nproc)" --label-exclude "slow|full" ;;
   *)      echo "usage: ./setup.sh [build|report|test]" >&2; exit 2 ;;
 esac

@@ -117,7 +117,7 @@ TEST_CASE("granular scenes: the quick shear box peaks, with a friction angle of 
     }
 }
 
-TEST_CASE("granular scenes: the full-size silo's heap stands at 30 to 45 degrees and its flow follows Beverloo's law", "[study]") {
+TEST_CASE("granular scenes: the full-size silo's heap stands at 30 to 45 degrees and its flow follows Beverloo's law", "[full]") {
     // About 50 minutes on two cores: 3 packings at each of 4 orifice widths, 510 CPU-s a run. The
     // widths are those that flow: at 0.175 m (3.7 stone sizes) two packings of three clog.
     // The bounds are issue 36's: railway ballast's angle of repose (35-45 degrees; the seed's
