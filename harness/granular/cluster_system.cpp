@@ -7,6 +7,10 @@
 
 namespace rotbench {
 
+// The contact search drops a pair only when it is apart by this relative margin, far above
+// round-off: every contact is kept, and the pairs keep their order (and the sums their rounding).
+constexpr double pruning_margin = 1.0 + 1e-9;
+
 ClusterSystem::ClusterSystem(std::vector<ClusterShape> shapes, const ContactMaterial& material, double friction,
                              const Vec3& gravity)
     : shapes_(std::move(shapes)), law_(material), friction_(friction), gravity_(gravity) {
@@ -103,7 +107,7 @@ void ClusterSystem::evaluate(Bodies& b, double t) const {
         const std::size_t a = std::min(i, j), c = std::max(i, j);  // the normal from the lower index
         const Vec3 d = centres_[c] - centres_[a];
         const double touch = radii_[a] + radii_[c];
-        if (d.squaredNorm() > touch * touch * (1.0 + 1e-9)) return;  // apart, whatever the round-off: no square root
+        if (d.squaredNorm() > touch * touch * pruning_margin) return;  // apart, whatever the round-off: no square root
         const double distance = d.norm(), overlap = touch - distance;
         if (!(overlap > 0.0) || distance == 0.0) return;
         const Vec3 n = d / distance;
@@ -129,7 +133,7 @@ void ClusterSystem::evaluate(Bodies& b, double t) const {
         near_spheres_.clear();
         for (std::size_t j = first_sphere_[q]; j < q_end; ++j) {
             const double near = radii_[j] + reach_p;
-            if (!((centres_[j] - positions_[p]).squaredNorm() > near * near * (1.0 + 1e-9))) near_spheres_.push_back(j);
+            if (!((centres_[j] - positions_[p]).squaredNorm() > near * near * pruning_margin)) near_spheres_.push_back(j);
         }
         if (near_spheres_.empty()) return;
         for (std::size_t i = first_sphere_[p]; i < p_end; ++i) {
@@ -144,7 +148,7 @@ void ClusterSystem::evaluate(Bodies& b, double t) const {
         // margin far above round-off keeps every contact): most stones are near no wall.
         near_walls_.clear();
         for (std::size_t w = 0; w < walls.size(); ++w)
-            if (!(std::abs(walls[w].normal.dot(b.position[body]) - walls[w].offset) > reach_of(body) * (1.0 + 1e-9)))
+            if (!(std::abs(walls[w].normal.dot(b.position[body]) - walls[w].offset) > reach_of(body) * pruning_margin))
                 near_walls_.push_back(w);
         for (const std::size_t end = s + sphere_count_of(body); s < end; ++s)
             for (const std::size_t w : near_walls_) {
