@@ -16,7 +16,7 @@ struct SceneMetrics {
     std::vector<std::string> metrics;  // in the order shown
 };
 const std::vector<SceneMetrics> granular_scenes = {
-    {"silo_discharge", {"discharge_time", "mass_flow_rate", "repose_angle", "mass_left_end"}},
+    {"silo_discharge", {"discharge_time", "mass_flow_rate", "repose_angle", "mass_left_end", "clogged"}},
     {"direct_shear", {"shear_stress_peak", "shear_stress_final", "normal_stress_mean", "inertial_number", "escaped_stones"}},
 };
 

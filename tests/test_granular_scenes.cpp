@@ -99,6 +99,25 @@ TEST_CASE("granular scenes: a box 65 536 stones wide is packed (its stones per l
     }
 }
 
+TEST_CASE("granular scenes: a silo whose flow stops under an arch is flagged clogged, without a discharge time or flow rate") {
+    // The quick silo (100 stones, opened at 0.6 s): at 0.05 m (about one stone) the stones span the
+    // orifice at once and 95 % of them stay; at 0.3 m all but the corner wedges leave by 2.3 s.
+    const auto run = [](double orifice, double t_end) {
+        ParamOverrides params = make_scene("silo_discharge", {})->quick_params();
+        params.push_back({"orifice", {orifice}});
+        params.push_back({"t_end", {t_end}});
+        return run_one({"silo_discharge", "richardson", 2e-5, 0.0, params}, {.measure_time = false});
+    };
+    const RunResult arched = run(0.05, 2.5), open = run(0.3, 4.5);
+    CHECK(arched.value("clogged") == 1.0);
+    CHECK(std::isnan(arched.value("discharge_time")));
+    CHECK(std::isnan(arched.value("mass_flow_rate")));
+    CHECK(arched.value("mass_left_end") > 0.75 * arched.series.front()[1]);
+    CHECK(open.value("clogged") == 0.0);
+    CHECK(std::isfinite(open.value("discharge_time")));  // it has stopped: the judge saw a stopped flow and passed it
+    CHECK(open.value("mass_flow_rate") > 0.0);
+}
+
 TEST_CASE("granular scenes: the quick shear box peaks, with a friction angle of 35 to 60 degrees rising in stress", "[slow]") {
     // Issue 36's range for ballast in a direct shear test (35-60 degrees); the seed's three normal stresses.
     double last_peak = 0;

@@ -26,7 +26,13 @@
 //                    squares line through the bins from the highest one out to the last that
 //                    is more than one stone high; the mean of the four angles. Only stones at
 //                    rest (below 0.05 m/s) on the table count;
-//   mass_left_end    kg left in the silo at t_end.
+//   mass_left_end    kg left in the silo at t_end;
+//   clogged          1 when the flow has stopped (as for discharge_time) with more than
+//                    three quarters of the mass at the opening left in the silo: an arch over
+//                    the orifice (a clean discharge leaves the corner wedges, a fifth of the
+//                    fill at the default orifice, half of the quick silo's thin layer; an arch
+//                    more than nine tenths). Its discharge_time and mass_flow_rate (of the
+//                    moments before the arch) are then NaN. 0 otherwise.
 #include "harness/scenes/granular_scene.hpp"
 
 #include <algorithm>
@@ -149,7 +155,8 @@ private:
             return pictures;
         }
         std::vector<std::pair<std::string, double>> metrics() const override {
-            if (curve_.empty()) return {{"discharge_time", NAN}, {"mass_flow_rate", NAN}, {"repose_angle", NAN}, {"mass_left_end", NAN}};
+            if (curve_.empty())
+                return {{"discharge_time", NAN}, {"mass_flow_rate", NAN}, {"repose_angle", NAN}, {"mass_left_end", NAN}, {"clogged", NAN}};
             const double start = curve_.front().second, end = curve_.back().second, t_last = curve_.back().first;
             // The mass left `stall` s before the end, against that at the end.
             double before_end = start;
@@ -163,7 +170,12 @@ private:
                 if (stopped && std::isnan(discharge_time) && gone >= scene_.discharged_) discharge_time = t;
                 if (gone >= 0.2 && gone <= 0.8) steady.emplace_back(t, left);
             }
-            return {{"discharge_time", discharge_time}, {"mass_flow_rate", -slope(steady)}, {"repose_angle", heap_angle(last_)}, {"mass_left_end", end}};
+            const bool clogged = stopped && end > 0.75 * start;
+            return {{"discharge_time", clogged ? NAN : discharge_time},
+                    {"mass_flow_rate", clogged ? NAN : -slope(steady)},
+                    {"repose_angle", heap_angle(last_)},
+                    {"mass_left_end", end},
+                    {"clogged", clogged ? 1.0 : 0.0}};
         }
 
     private:
