@@ -1,5 +1,6 @@
 #include "harness/exec/client_run.hpp"
 
+#include "harness/exec/granular_client.hpp"
 #include "harness/exec/run_kinds.hpp"
 #include "harness/store/client.hpp"
 #include "harness/store/csv.hpp"
@@ -142,14 +143,29 @@ RunResult run_client(const RunSpec& requested, const RunOptions& options, const 
     if (const std::string why = why_not_taken(requested.scheme, requested.scene); !why.empty()) return fail(why);
     const double t_end = requested.kind == RunKind::horizon ? energy_horizon * scene->t_end() : scene->t_end();
     const std::int64_t steps = step_count(t_end, requested.dt);
+    auto* granular = dynamic_cast<GranularScene*>(scene.get());
+    if (granular && requested.kind != RunKind::trajectory) return fail("a client runs a granular scene as a trajectory only");
     const Scratch scratch;
-    write_file_atomically(scratch.path / "scene.json", client_scene_json(*scene, requested, t_end, steps));
+    const std::string output = granular ? "samples.csv" : "trajectory.csv";
+    try {
+        write_file_atomically(scratch.path / "scene.json", granular ? granular_scene_json(*granular, requested, t_end, steps)
+                                                                    : client_scene_json(*scene, requested, t_end, steps));
+    } catch (const InputError& e) {  // a scene its client file lists but no spec can describe
+        return fail(e.what());
+    }
     std::vector<std::string> args = client.program;
-    args.insert(args.end(), {"scene.json", "trajectory.csv"});
-    const double seconds = limits.seconds > 0 ? limits.seconds : steps_timeout(static_cast<double>(steps));
+    args.insert(args.end(), {"scene.json", output});
+    const double body_steps = static_cast<double>(steps) * static_cast<double>(granular ? scene->initial_state().size() : 1);
+    const double seconds = limits.seconds > 0 ? limits.seconds : steps_timeout(body_steps);
     const WorkerOutput out = run_program(args, scratch.path.string(), seconds, limits.megabytes ? limits.megabytes : isolation_memory(1), "program");
     if (out.interrupted) return RunResult{failed.spec, {}, {}, true};
     if (!out.failure.empty()) return fail(out.failure);
+    if (granular) {
+        RunResult result = replay_granular_samples(requested, *granular, scratch.path / output, steps);
+        if (!result.failure.empty()) result.failure += out.last_error_line;
+        result.spec.t_end = t_end;
+        return result;
+    }
     std::vector<Row> rows;
     if (const std::string why = read_rows(scratch.path / "trajectory.csv", steps, requested.dt, rows); !why.empty())
         return fail(why + out.last_error_line);

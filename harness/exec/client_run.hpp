@@ -21,9 +21,11 @@ inline constexpr const char* client_trajectory_header = "t,qw,qx,qy,qz,wx,wy,wz"
 // to within round-off). InputError when the scene is not one body under a TorqueLaw.
 std::string client_scene_json(const Scene& scene, const RunSpec& spec, double t_end, std::int64_t steps);
 
-// Runs of kind trajectory and horizon; any other kind, a scene the client file does not list, a
-// program that fails, hangs or writes a trajectory that is malformed, short, or not finite is a
-// failed run saying which. Timing metrics are not measured (the program's cost is its own).
+// Runs of kind trajectory and horizon (on a granular scene, trajectory only: the program runs the
+// scene itself and writes samples of its stones, harness/exec/granular_client.hpp); any other
+// kind, a scene the client file does not list, a program that fails, hangs or writes a
+// trajectory that is malformed, short, or not finite is a failed run saying which. Timing
+// metrics are not measured (the program's cost is its own).
 RunResult run_client(const RunSpec& spec, const RunOptions& options, const IsolationLimits& limits);
 
 }  // namespace rotbench

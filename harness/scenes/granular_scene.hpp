@@ -12,6 +12,8 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <optional>
+#include <vector>
 
 namespace rotbench {
 
@@ -29,13 +31,28 @@ public:
         params.declare("gravity", {9.81}, "m/s^2", "gravitational acceleration (along -z)");
     }
 
-    void evaluate_forces(Bodies& b, double t) const override { system_->evaluate(b, t); }
+    void evaluate_forces(Bodies& b, double t) const override {
+        place_walls(t);
+        system_->evaluate(b, t);
+    }
     double energy(const Bodies& b) const override { return kinetic_energy(b) + system_->potential_energy(b) + system_->elastic_energy(); }
     std::vector<std::pair<std::string, double>> energy_parts(const Bodies& b) const override {
         return {{"kinetic", kinetic_energy(b)}, {"potential", system_->potential_energy(b)}, {"elastic", system_->elastic_energy()}};
     }
     bool conserves_energy() const override { return false; }  // damped and frictional
     ClusterSystem& system() const { return *system_; }
+
+    // For a DEM code that runs the scene from a description of it (a granular client,
+    // harness/exec/granular_client.hpp). The walls stand still between the times they change,
+    // and place_walls(t) sets them as they stand at t; a scene whose walls move, or follow the
+    // stones, cannot be so described: nullopt.
+    virtual std::optional<std::vector<double>> wall_changes() const { return std::nullopt; }
+    virtual void place_walls(double) const {}
+    // The scene's probe looks at the stones from this time on.
+    virtual double observed_from() const { return 0.0; }
+    const ContactMaterial& material() const { return material_; }
+    double friction() const { return friction_; }
+    Vec3 gravity() const { return Vec3(0.0, 0.0, -params.number("gravity")); }
 
 protected:
     // For the derived scene's prepare(): validates the shared keys and builds the stones.
@@ -52,7 +69,7 @@ protected:
         params.require(friction_ >= 0.0, "friction", "must not be negative");
         const double g = params.number("gravity");
         params.require(g >= 0.0, "gravity", "must not be negative");
-        system_ = std::make_unique<ClusterSystem>(ballast_shapes(params.positive("density")), material_, friction_, Vec3(0.0, 0.0, -g));
+        system_ = std::make_unique<ClusterSystem>(ballast_shapes(params.positive("density")), material_, friction_, gravity());
     }
     std::size_t cluster_count() const { return static_cast<std::size_t>(params.number("clusters")); }
     // The spheres of every stone at time t and the walls as they stand, as SceneProbe::Snapshots rows.

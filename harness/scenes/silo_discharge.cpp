@@ -90,7 +90,7 @@ public:
         params.require(wall_friction >= 0.0, "wall_friction", "must not be negative");
         params.require(floor_friction >= 0.0, "floor_friction", "must not be negative");
         // The walls act on spheres whose centre is above the bottom; the bottom is closed
-        // until fill_time (evaluate_forces opens it).
+        // until fill_time (place_walls opens it).
         Eigen::AlignedBox3d inside(Vec3(-INFINITY, -INFINITY, 0.0), Vec3::Constant(INFINITY));
         const double h = 0.5 * width_;
         for (const Vec3& n : std::vector<Vec3>{Vec3::UnitX(), -Vec3::UnitX(), Vec3::UnitY(), -Vec3::UnitY()})
@@ -109,13 +109,15 @@ public:
         const double h = 0.5 * width_;
         return lattice_packing(Vec3(-h, -h, 0.0), Vec3(h, h, INFINITY));
     }
-    void evaluate_forces(Bodies& b, double t) const override {
+    // The bottom is closed until fill_time.
+    std::optional<std::vector<double>> wall_changes() const override { return std::vector<double>{fill_time_}; }
+    void place_walls(double t) const override {
         auto& bottom = system_->walls[bottom_wall];
         const double o = 0.5 * orifice_;
         if (t >= fill_time_) bottom.hole = Eigen::AlignedBox3d(Vec3(-o, -o, -INFINITY), Vec3(o, o, INFINITY));
         else bottom.hole.reset();
-        GranularScene::evaluate_forces(b, t);
     }
+    double observed_from() const override { return fill_time_; }
 
     std::vector<double> default_dts() const override { return {2e-5, 1e-5}; }
     std::vector<double> quick_dts() const override { return {2e-5}; }
@@ -132,7 +134,7 @@ private:
     public:
         explicit Probe(const SiloDischarge& scene) : scene_(scene) {}
         void observe(double t, const Bodies& b) override {
-            if (t < scene_.fill_time_ || t < next_sample_) return;
+            if (t < scene_.observed_from() || t < next_sample_) return;
             next_sample_ = t + 1e-3;  // the mass curve every millisecond
             double left = 0;
             for (std::size_t i = 0; i < b.size(); ++i)
