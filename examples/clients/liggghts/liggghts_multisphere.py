@@ -2,6 +2,7 @@
 """rotbench client adapter for LIGGGHTS's `fix multisphere` (docs/clients.md).
 
 usage: liggghts_multisphere.py scene.json trajectory.csv
+(a granular scene's spec goes to liggghts_granular.py, which writes samples.csv)
 
 The body is a multisphere template of six small spheres at +-a along its principal axes, given
 the scene's mass and its principal inertia tensor (`mass`, `inertia_tensor`, `use_density`: no
@@ -13,11 +14,18 @@ digits, and the orientation's columns and the world angular velocity are read fr
 for LAMMPS. Python 3 stdlib only; everything stays in the current directory.
 """
 import json
+import os
 import subprocess
 import sys
 
 spec_path, out_path = sys.argv[1], sys.argv[2]
 spec = json.load(open(spec_path))
+if spec["format"].startswith("rotbench-granular-scene"):  # a whole granular scene: its own adapter
+    sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+    sys.dont_write_bytecode = True  # no __pycache__ beside the adapter: nothing left outside the scratch directory
+    import liggghts_granular
+    liggghts_granular.main(spec_path, out_path)
+    sys.exit(0)
 A, r = 1.0, 0.1  # marker distance and sphere radius (m): the spheres never touch
 g = lambda v: "%.17g" % v
 I = spec["inertia_body"]
