@@ -5,6 +5,7 @@
 #include "reports/clients_report.hpp"
 
 #include "reports/cost_table.hpp"
+#include "reports/granular_speed.hpp"
 #include "reports/granular_report.hpp"
 #include "reports/provenance.hpp"
 
@@ -261,6 +262,7 @@ std::string markdown_report(const ResultSet& set, const std::string& command_lin
     md += answer_section(set, answers, options.tolerances);
     md += stability_summary(options.stability, set, dir);
     md += cost_section(dir.path());
+    md += granular_speed_section(dir.path());
 
     // The overview panel of each scene's plots: per family, the scheme that reaches the
     // strictest tolerance at the least CPU time there (or, without a reference, the smallest

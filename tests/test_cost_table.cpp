@@ -1,5 +1,7 @@
-// The report's cost section, from a cost.csv as benchmarks/cost.py writes it.
+// The report's cost sections, from a cost.csv as benchmarks/cost.py writes it and a granular_speed.csv as
+// benchmarks/granular_speed.py does.
 #include "reports/cost_table.hpp"
+#include "reports/granular_speed.hpp"
 #include "harness/store/output_files.hpp"
 #include "schemes/registry.hpp"
 
@@ -75,5 +77,25 @@ TEST_CASE("a hand-edited cost.csv with a field that is not a number is bad input
     edited.replace(edited.find("zvw,1000000,40,"), 15, "zvw,1000000,4O,");
     write_file_atomically(dir / "cost.csv", edited);
     CHECK_THROWS_MATCHES(cost_section(dir), InputError, Catch::Message((dir / "cost.csv").string() + ":6: column ns_batched: '4O' is not a number"));
+    std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("the granular step beside LIGGGHTS: per phase, each code's CPU per sphere-step and their ratio, and no section without its table") {
+    const auto dir = fresh_dir("rotbench_granular_speed");
+    CHECK(granular_speed_section(dir).empty());
+    write_file_atomically(dir / "granular_speed.csv",
+                          "code,phase,t_end,steps,spheres,cpu_s,cpu_per_sphere_step\n"
+                          "rotbench,fill,7.5,100000,11300,113,1e-07\n"
+                          "rotbench,discharge,7.5,275000,11300,248.6,8e-08\n"
+                          "liggghts,fill,7.5,100000,11000,220,2e-07\n"
+                          "liggghts,discharge,7.5,275000,11000,1210,4e-07\n");
+    const std::string md = granular_speed_section(dir);
+    CHECK_THAT(md, Catch::Contains("`silo_discharge`, 7.5 s"));
+    CHECK_THAT(md, Catch::Contains("| fill | 1e-07 | 2e-07 | 0.50 | 100000 | 11300, 11000 |"));
+    CHECK_THAT(md, Catch::Contains("| discharge | 8e-08 | 4e-07 | 0.20 | 275000 | 11300, 11000 |"));
+    // A hand-edited table is input: a field that is not a number is refused with its line.
+    write_file_atomically(dir / "granular_speed.csv",
+                          "code,phase,t_end,steps,spheres,cpu_s,cpu_per_sphere_step\nrotbench,fill,7.5,x,1,1,1\n");
+    CHECK_THROWS_WITH(granular_speed_section(dir), Catch::Contains("granular_speed.csv:2: column steps"));
     std::filesystem::remove_all(dir);
 }

@@ -24,10 +24,10 @@ public:
             throw InputError("--stability " + stability_ + ": no stability.csv there (rotbench stability --out writes one)");
         const ResultSet set = describe(read_results(dir_), read_schemes(dir_));
         const OutputDir out = OutputDir::open(out_.empty() ? dir_ : out_, {"run", "", {"report.md", "answer.csv"}, overwrite_});
-        if (out_.empty() || std::filesystem::equivalent(out_, dir_)) {
-        } else if (std::filesystem::exists(std::filesystem::path(dir_) / "cost.csv")) {  // the cost table goes with the report
-            out.write("cost.csv", read_input_file(std::filesystem::path(dir_) / "cost.csv", "cannot read"));
-        }
+        if (!out_.empty() && !std::filesystem::equivalent(out_, dir_))
+            for (const char* table : {"cost.csv", "granular_speed.csv"})  // the cost tables go with the report
+                if (std::filesystem::exists(std::filesystem::path(dir_) / table))
+                    out.write(table, read_input_file(std::filesystem::path(dir_) / table, "cannot read"));
         out.write("report.md", markdown_report(set, how.command_line, out, options, all_cores()));
         how.out << "wrote " << (out.path() / "report.md").string() << "\n";
         return 0;

@@ -1,0 +1,123 @@
+#!/usr/bin/env python3
+"""rotbench's granular step beside LIGGGHTS's, on one silo: CPU seconds per sphere-step, for the
+filling and for the discharge apart (docs/performance.md).
+
+Both codes run the silo rotbench describes (the spec a granular client gets, docs/clients.md):
+the same stones, material, walls, dt and duration; LIGGGHTS through the shipped adapter
+(examples/clients/liggghts/liggghts_granular.py) with no samples written, rotbench with
+`rotbench trajectory` and `richardson` (LIGGGHTS's map). They run at the same time, one process
+each on its own core, so that both see the same machine. CPU time is each process's own (user +
+system, from wait4). rotbench's filling is a run that stops at the opening, its discharge the
+full run less that; LIGGGHTS's run is split at the opening, and its CPU time is shared out
+between the pieces as its own loop times are. Packings differ (LIGGGHTS draws its own), so each
+code's figure is over its own number of spheres.
+
+The table goes to OUT_DIR/granular_speed.csv, where `rotbench report OUT_DIR` shows it in its cost
+section (as benchmarks/cost.py's cost.csv).
+
+Usage: benchmarks/granular_speed.py [--quick] [--t-end S] [--seed N] BUILD_DIR OUT_DIR
+  --quick   the quick silo (100 stones), seconds; the default is the full silo, about ten
+            CPU-minutes per code
+"""
+import argparse
+import csv
+import json
+import os
+import subprocess
+import sys
+import tempfile
+import threading
+
+here = os.path.dirname(os.path.abspath(__file__))
+adapter = os.path.join(here, "..", "examples", "clients", "liggghts", "liggghts_granular.py")
+
+
+def cpu_of(args, cwd, log=None):  # (CPU seconds of the process, its stderr); exits on failure
+    with open(log or os.devnull, "w") as err:
+        p = subprocess.Popen(args, cwd=cwd, stdout=subprocess.DEVNULL, stderr=err)
+        _, status, usage = os.wait4(p.pid, 0)
+    if status != 0:
+        sys.exit("granular_speed.py: %s failed (status %d)%s" % (args[0], status, ": see " + log if log else ""))
+    return usage.ru_utime + usage.ru_stime
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--quick", action="store_true")
+    parser.add_argument("--t-end", type=float)
+    parser.add_argument("--seed", type=int, default=1)
+    parser.add_argument("build")
+    parser.add_argument("out")
+    a = parser.parse_args()
+    rotbench = os.path.join(os.path.abspath(a.build), "rotbench")
+    settings = ["--set", "silo_discharge.restitution=0.051", "--set", "silo_discharge.seed=%d" % a.seed]
+    if a.t_end:
+        settings += ["--set", "silo_discharge.t_end=%r" % a.t_end]
+    quick = ["--quick"] if a.quick else []
+    with tempfile.TemporaryDirectory(prefix="granular_speed_") as scratch:
+        # The spec, from rotbench itself: a client whose program keeps it (its run then fails: no samples).
+        spec_path = os.path.join(scratch, "spec.json")
+        with open(os.path.join(scratch, "keep.toml"), "w") as f:
+            program = ["python3", "-c", "import shutil, sys; shutil.copy(sys.argv[2], sys.argv[1])", spec_path]
+            f.write('id = "keep_spec"\nprogram = %s\nscenes = ["silo_discharge"]\nclaims = "richardson"\n' % json.dumps(program))
+        subprocess.run([rotbench, "--client", os.path.join(scratch, "keep.toml"), "run", "--schemes", "keep_spec", "--scenes",
+                        "silo_discharge", "--dt", "2e-5", "--out", os.path.join(scratch, "spec_run")] + quick + settings,
+                       check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        spec = json.load(open(spec_path))
+        dt, steps, opening = spec["dt"], spec["steps"], spec["walls"][1]["from"]
+        fill_steps = round(opening / dt)
+        spec["sample_first"] = steps + spec["sample_stride"]  # no samples: the step alone
+        ligg = os.path.join(scratch, "liggghts")
+        os.mkdir(ligg)
+        json.dump(spec, open(os.path.join(ligg, "scene.json"), "w"))
+
+        result = {}
+
+        def run_liggghts():
+            log = os.path.join(scratch, "liggghts.err")
+            cpu = cpu_of(["python3", adapter, "scene.json", "samples.csv"], ligg, log)
+            loops = [line.split() for line in open(log) if line.startswith("liggghts: Loop time of")]
+            wall = [float(w[4]) for w in loops]
+            atoms = int(loops[-1][loops[-1].index("atoms,") - 1])
+            result["liggghts"] = (cpu * wall[0] / sum(wall), cpu * wall[1] / sum(wall), atoms)
+
+        def run_rotbench():
+            trajectory = [rotbench, "trajectory", "--scene", "silo_discharge", "--scheme", "richardson", "--dt", repr(dt), "--samples", "10"]
+            for key, values in spec["params"].items():
+                if key != "t_end":
+                    trajectory += ["--set", "%s=%s" % (key, ",".join(repr(v) for v in values))]
+            fill = cpu_of(trajectory + ["--t-end", repr(opening), "--out", os.path.join(scratch, "fill.csv")], scratch)
+            whole = cpu_of(trajectory + ["--t-end", repr(spec["t_end"]), "--out", os.path.join(scratch, "whole.csv")], scratch)
+            result["rotbench"] = (fill, whole - fill, spec["stones"]["spheres"])
+
+        threads = [threading.Thread(target=run_liggghts), threading.Thread(target=run_rotbench)]
+        for t in threads:
+            t.start()
+        for t in threads:
+            t.join()
+    rows = []
+    for code in ("rotbench", "liggghts"):
+        if code not in result:
+            sys.exit("granular_speed.py: %s did not finish" % code)
+        fill, discharge, spheres = result[code]
+        for phase, cpu, n in (("fill", fill, fill_steps), ("discharge", discharge, steps - fill_steps)):
+            rows.append({"code": code, "phase": phase, "t_end": spec["t_end"], "steps": n, "spheres": spheres, "cpu_s": "%.4g" % cpu,
+                         "cpu_per_sphere_step": "%.4g" % (cpu / (n * spheres))})
+    os.makedirs(a.out, exist_ok=True)
+    fd, temporary = tempfile.mkstemp(dir=a.out, prefix=".granular_speed.csv.")  # beside the target: os.replace is atomic
+    try:
+        with os.fdopen(fd, "w", newline="") as f:
+            w = csv.DictWriter(f, fieldnames=list(rows[0]), lineterminator="\n")
+            w.writeheader()
+            w.writerows(rows)
+        os.replace(temporary, os.path.join(a.out, "granular_speed.csv"))
+    except BaseException:
+        os.unlink(temporary)
+        raise
+    for phase in ("fill", "discharge"):
+        r, l = (float(next(x for x in rows if x["code"] == c and x["phase"] == phase)["cpu_per_sphere_step"]) for c in ("rotbench", "liggghts"))
+        print("%-9s rotbench %.3g, LIGGGHTS %.3g CPU-s per sphere-step: rotbench / LIGGGHTS = %.2f" % (phase, r, l, r / l))
+
+
+if __name__ == "__main__":
+    main()
