@@ -194,6 +194,7 @@ TEST_CASE("granular client: stones handed back at the sample times give the prob
              first_row.substr(first_row.find(',', first_row.find(',', first_row.find(',', first_row.find(',') + 1) + 1) + 1)) +
              run.csv.substr(second),
          "its samples.csv:2: a value that is not finite"},
+        {run.csv + std::string(64 * 16 * 60 * 81, '0') + "\n", "is larger than every stone in every sample can make it"},
     };
     int n = 0;
     for (const auto& [text, message] : spoiled) {

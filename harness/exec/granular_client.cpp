@@ -20,12 +20,13 @@ constexpr double domain_margin = 1.0;
 nlohmann::json vec(const Vec3& v) { return {v.x(), v.y(), v.z()}; }
 nlohmann::json box(const Eigen::AlignedBox3d& b) { return {vec(b.min()), vec(b.max())}; }
 
-// The stones' extent at the start, and the box that holds it and every finite wall coordinate.
+// The box the spheres fill.
 Eigen::AlignedBox3d extent_of(const std::vector<Sphere>& spheres) {
     Eigen::AlignedBox3d extent;
     for (const Sphere& s : spheres) extent.extend(s.centre - Vec3::Constant(s.radius)).extend(s.centre + Vec3::Constant(s.radius));
     return extent;
 }
+// `extent`, grown to hold every finite coordinate of the walls (planes, regions, holes).
 void extend_by_walls(Eigen::AlignedBox3d& extent, const std::vector<Wall>& walls) {
     const auto finite = [](const Vec3& v) { return v.unaryExpr([](double c) { return std::isfinite(c) ? c : 0.0; }); };
     for (const Wall& w : walls) {
@@ -36,7 +37,7 @@ void extend_by_walls(Eigen::AlignedBox3d& extent, const std::vector<Wall>& walls
 
 using Sample = std::array<double, 16>;
 
-// Sample j's stones into `b` (fresh bodies of their shapes), for the probe.
+// A sample's stones as bodies of their shapes (the cluster system takes their shapes), for the probe.
 void set_stones(GranularScene& scene, const std::vector<Sample>& rows, Bodies& b) {
     std::vector<int> shapes;
     std::vector<Vec3> places;
@@ -133,6 +134,11 @@ RunResult replay_granular_samples(const RunSpec& spec, GranularScene& scene, con
     const std::string name = "its samples.csv";
     const SampleSteps due = granular_sample_steps(scene, spec.dt);
     const std::size_t count = scene.initial_state().size(), shapes = scene.system().shapes().size();
+    const std::int64_t last = due.first <= steps ? due.first + (steps - due.first) / due.stride * due.stride : due.first - due.stride;
+    // Read a line at a time, and never more than every stone in every sample at 64 bytes a number.
+    const double most_bytes = 64.0 * 16.0 * static_cast<double>(count) * static_cast<double>((last - due.first) / due.stride + 1) + 4096.0;
+    if (std::error_code ec; static_cast<double>(std::filesystem::file_size(file, ec)) > most_bytes || ec)
+        return fail(fmt::format("{} is larger than every stone in every sample can make it ({:.0f} bytes)", name, most_bytes));
     const auto probe = scene.make_probe();
     std::string line;
     if (!std::getline(in, line) || line != granular_samples_header)
@@ -141,7 +147,6 @@ RunResult replay_granular_samples(const RunSpec& spec, GranularScene& scene, con
     std::vector<Sample> rows;
     std::vector<bool> seen(count);
     Bodies b;
-    const std::int64_t last = due.first <= steps ? due.first + (steps - due.first) / due.stride * due.stride : due.first - due.stride;
     const auto end_sample = [&] {
         const double t = static_cast<double>(step) * spec.dt;
         set_stones(scene, rows, b);
