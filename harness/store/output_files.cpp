@@ -82,13 +82,17 @@ std::pair<std::filesystem::path, int> open_temporary(const std::filesystem::path
     thread_local std::mt19937_64 random{std::random_device{}() ^ static_cast<std::uint64_t>(::getpid())};
     std::filesystem::path temporary;
     int fd = -1;
+    // Listed before it exists: a signal between its creation and its listing would leave it.
     for (int attempt = 0; fd < 0 && attempt < 16; ++attempt) {
         temporary = path.parent_path() / fmt::format(".{}.{:016x}.tmp", path.filename().string(), random());
+        list_temporary(temporary);
         fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0644);
+        const int error = errno;
+        if (fd < 0) release_temporary(temporary);
+        errno = error;
         if (fd < 0 && errno != EEXIST) break;
     }
     if (fd < 0) throw OutputError(fmt::format("cannot write {}: {}", path.string(), std::strerror(errno)));
-    list_temporary(temporary);
     return {temporary, fd};
 }
 
