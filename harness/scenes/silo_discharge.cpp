@@ -29,7 +29,7 @@
 //   mass_left_end    kg left in the silo at t_end;
 //   clogged          1 when the flow has stopped (as for discharge_time) with more than
 //                    three quarters of the mass at the opening left in the silo: an arch over
-//                    the orifice (a clean discharge leaves the corner wedges, a fifth of the
+//                    the orifice (a clean discharge leaves the corner wedges, 4-8 % of the
 //                    fill at the default orifice, half of the quick silo's thin layer; an arch
 //                    more than nine tenths). Its discharge_time and mass_flow_rate (of the
 //                    moments before the arch) are then NaN. 0 otherwise.
