@@ -18,13 +18,14 @@ import os
 import subprocess
 import sys
 
+sys.dont_write_bytecode = True  # no __pycache__ beside the adapter: nothing left outside the scratch directory
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from liggghts_granular import cross, quat, main as run_granular  # noqa: E402 (this folder's shared half)
+
 spec_path, out_path = sys.argv[1], sys.argv[2]
 spec = json.load(open(spec_path))
 if spec["format"].startswith("rotbench-granular-scene"):  # a whole granular scene: its own adapter
-    sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-    sys.dont_write_bytecode = True  # no __pycache__ beside the adapter: nothing left outside the scratch directory
-    import liggghts_granular
-    liggghts_granular.main(spec_path, out_path)
+    run_granular(spec_path, out_path)
     sys.exit(0)
 A, r = 1.0, 0.1  # marker distance and sphere radius (m): the spheres never touch
 g = lambda v: "%.17g" % v
@@ -42,10 +43,6 @@ def rot(q):  # body -> world rotation matrix of a unit quaternion (w, x, y, z)
     return [[1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
             [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
             [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)]]
-
-
-def cross(a, b):
-    return [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
 
 
 # The torque as forces on the six spheres (atom ids 1..6 in template order, pair k at +-A c_k),
@@ -100,22 +97,6 @@ lines += [
 open("in.rotbench", "w").write("\n".join(lines) + "\n")
 # Not `-screen none`: LIGGGHTS 3.8.0 dies of SIGSEGV with it; its screen output is discarded instead.
 subprocess.run(["liggghts", "-in", "in.rotbench", "-echo", "none", "-log", "none"], check=True, stdout=subprocess.DEVNULL)
-
-
-def quat(m):  # rotation matrix -> unit quaternion, w first (Shepperd's method)
-    t = m[0][0] + m[1][1] + m[2][2]
-    if t > 0:
-        s = 2 * (1 + t) ** 0.5
-        return [s / 4, (m[2][1] - m[1][2]) / s, (m[0][2] - m[2][0]) / s, (m[1][0] - m[0][1]) / s]
-    i = max(range(3), key=lambda k: m[k][k])
-    j, k = (i + 1) % 3, (i + 2) % 3
-    s = 2 * (1 + m[i][i] - m[j][j] - m[k][k]) ** 0.5
-    q = [0.0] * 4
-    q[0] = (m[k][j] - m[j][k]) / s
-    q[1 + i] = s / 4
-    q[1 + j] = (m[j][i] + m[i][j]) / s
-    q[1 + k] = (m[k][i] + m[i][k]) / s
-    return q
 
 
 with open("markers.dump") as dump, open(out_path, "w") as out:
