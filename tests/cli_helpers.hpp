@@ -4,6 +4,7 @@
 #include "harness/cli/cli.hpp"
 #include "harness/store/csv.hpp"
 #include "harness/store/parse.hpp"
+#include "harness/exec/executor.hpp"
 #include "harness/exec/run.hpp"
 
 #include <algorithm>
@@ -33,6 +34,13 @@ inline Cli cli(std::vector<std::string> args) {
     std::ostringstream out, err;
     const int status = run_cli(static_cast<int>(argv.size()), argv.data(), out, err);
     return {status, out.str(), err.str()};
+}
+
+// One run through the executor (in process, or a client's program), untimed and quiet.
+inline RunResult made(const RunSpec& spec) {
+    std::ostringstream out, err;
+    Executor executor(out, err, {.run = {.measure_time = false}, .quiet = true});
+    return executor.run(spec);
 }
 
 inline fs::path fresh_dir(const std::string& name) {

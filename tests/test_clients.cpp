@@ -33,12 +33,6 @@ fs::path client_file(const fs::path& dir, const std::string& id, const std::stri
     return file;
 }
 
-RunResult made(const RunSpec& spec) {
-    std::ostringstream out, err;
-    Executor executor(out, err, {.run = {.measure_time = false}, .quiet = true});
-    return executor.run(spec);
-}
-
 }  // namespace
 
 TEST_CASE("clients: a client whose program is rotbench's own scheme gives the built-in's metrics, bit for bit") {

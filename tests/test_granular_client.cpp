@@ -71,12 +71,6 @@ std::string copying_client(const fs::path& dir, const std::string& id, const fs:
     return load_client(file.string());
 }
 
-RunResult made(const RunSpec& spec) {
-    std::ostringstream out, err;
-    Executor executor(out, err, {.run = {.measure_time = false}, .quiet = true});
-    return executor.run(spec);
-}
-
 }  // namespace
 
 TEST_CASE("granular client: the walls as rectangles cover each wall's region, less its hole, facing the stones") {

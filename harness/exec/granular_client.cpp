@@ -191,14 +191,8 @@ RunResult replay_granular_samples(const RunSpec& spec, GranularScene& scene, con
     if (step != last + due.stride)
         return fail(fmt::format("{} stops before step {}; samples are due every {} steps from step {} to step {}", name, step, due.stride,
                                 due.first, last));
-    for (const auto& [metric, value] : probe->metrics()) result.metrics.emplace_back(metric, value);
-    if (SceneProbe::Curve curve = probe->curve(); !curve.rows.empty()) {
-        result.series_columns = std::move(curve.columns);
-        result.series = std::move(curve.rows);
-    }
-    SceneProbe::Snapshots pictures = probe->snapshots();
-    result.snapshots = std::move(pictures.spheres);
-    result.walls = std::move(pictures.walls);
+    result.metrics = probe->metrics();
+    add_probe_pictures(*probe, result);
     return result;
 }
 

@@ -116,7 +116,8 @@ public:
         // |(|q| - 1)| is largest at the largest or the smallest |q|^2 (both start at 1: no error).
         if (probe_)
             for (const auto& [name, value] : probe_->metrics()) r.metrics.emplace_back(name, unstable() ? nan : value);
-        add(metric::quat_norm_err_max, std::max(std::abs(std::sqrt(quat_norm_sq_max_) - 1.0), std::abs(std::sqrt(quat_norm_sq_min_) - 1.0)));
+        add(metric::quat_norm_err_max,
+            std::max(std::abs(std::sqrt(quat_norm_sq_max_) - 1.0), std::abs(std::sqrt(quat_norm_sq_min_) - 1.0)));
         if (unstable()) {
             r.metrics.emplace_back(metric::fail_step, static_cast<double>(fail_step_));
             r.metrics.emplace_back(metric::fail_time, fail_time_);
@@ -124,15 +125,7 @@ public:
         }
         r.series_columns = series_columns_;
         r.series = series_;
-        if (probe_ && !unstable()) {  // the energy series and a probe's curve never meet: granular scenes are damped
-            if (SceneProbe::Curve curve = probe_->curve(); !curve.rows.empty() && r.series.empty()) {
-                r.series_columns = std::move(curve.columns);
-                r.series = std::move(curve.rows);
-            }
-            SceneProbe::Snapshots pictures = probe_->snapshots();
-            r.snapshots = std::move(pictures.spheres);
-            r.walls = std::move(pictures.walls);
-        }
+        if (probe_ && !unstable()) add_probe_pictures(*probe_, r);
     }
 
 private:
@@ -172,7 +165,13 @@ private:
     // the secular drift rate (per second), apart from the bounded oscillation.
     struct LineFit {
         double n = 0, st = 0, sy = 0, stt = 0, sty = 0;
-        void add(double t, double y) { n += 1; st += t; sy += y; stt += t * t; sty += t * y; }
+        void add(double t, double y) {
+            n += 1;
+            st += t;
+            sy += y;
+            stt += t * t;
+            sty += t * y;
+        }
         double slope() const { return n < 2 ? 0.0 : (n * sty - st * sy) / (n * stt - st * st); }
     } envelope_fit_;
     std::vector<std::string> series_columns_;
@@ -215,6 +214,18 @@ struct Checkpoint {
 };
 
 }  // namespace
+
+void add_probe_pictures(const SceneProbe& probe, RunResult& r) {
+    // The energy series and a probe's curve never meet (granular scenes are damped): the curve
+    // takes the series' place when there is none.
+    if (SceneProbe::Curve curve = probe.curve(); !curve.rows.empty() && r.series.empty()) {
+        r.series_columns = std::move(curve.columns);
+        r.series = std::move(curve.rows);
+    }
+    SceneProbe::Snapshots pictures = probe.snapshots();
+    r.snapshots = std::move(pictures.spheres);
+    r.walls = std::move(pictures.walls);
+}
 
 std::unique_ptr<Scene> scene_of(const RunSpec& spec) {
     ParamOverrides overrides = spec.params;
@@ -266,12 +277,12 @@ RunResult run_trajectory(const RunSpec& requested, const RunOptions& options, co
         Bodies bodies = scene->initial_state();
         std::unique_ptr<RotationScheme> scheme = make();
         TimedScheme* timed = nullptr;
-        if (scene->times_in_run()) scheme = std::make_unique<TimedScheme>(std::move(scheme)), timed = static_cast<TimedScheme*>(scheme.get());
+        if (scene->times_in_run())
+            scheme = std::make_unique<TimedScheme>(std::move(scheme)), timed = static_cast<TimedScheme*>(scheme.get());
         const double loop_start = thread_cpu_seconds();
         const auto reference = make_reference(*scene, dt, steps);
-        const std::int64_t stride = options.series_samples > 0 && scene->reports_energy_series()
-                                        ? std::max<std::int64_t>(1, steps / options.series_samples)
-                                        : 0;
+        const std::int64_t stride =
+            options.series_samples > 0 && scene->reports_energy_series() ? std::max<std::int64_t>(1, steps / options.series_samples) : 0;
         MetricsObserver observer(*scene, reference.get(), bodies, stride);
         const SampledTiming sampling(steps);
         if (sampling.sampled()) checkpoints.push_back({0, bodies});
@@ -315,8 +326,9 @@ RunResult run_trajectory(const RunSpec& requested, const RunOptions& options, co
                 Bodies bodies = start.bodies;
                 auto scheme = make();
                 std::int64_t evals = 0;
-                simulate(*scene, *scheme, bodies, dt, sampling.segment_steps(), evals,
-                         [](std::int64_t, double, const Bodies&) { return !interrupt_signal(); }, start.step);
+                simulate(
+                    *scene, *scheme, bodies, dt, sampling.segment_steps(), evals,
+                    [](std::int64_t, double, const Bodies&) { return !interrupt_signal(); }, start.step);
             }
         });  // warm: the metrics run has just made the same steps (harness/timing.hpp)
         const double scale = static_cast<double>(steps) / static_cast<double>(timed_steps);

@@ -27,6 +27,9 @@ struct RunOptions {
 // The scene a run is made on: its parameters, and its t_end (0: the scene's own).
 std::unique_ptr<Scene> scene_of(const RunSpec& spec);
 
+// A scene probe's curve (as the run's series, unless it has one) and pictures, into the result.
+void add_probe_pictures(const SceneProbe& probe, RunResult& r);
+
 // Runs and measures; never throws for a failing scheme (the failure is recorded), but
 // throws InputError for unknown ids or bad numbers. A run whose records outgrow memory fails
 // with out_of_memory_failure: rotbench's limit, never counted as the scheme's blow-up.
