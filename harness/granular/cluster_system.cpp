@@ -10,12 +10,20 @@ namespace rotbench {
 // The contact search drops a pair only when it is apart by this relative margin, far above
 // round-off: every contact is kept, and the pairs keep their order (and the sums their rounding).
 constexpr double pruning_margin = 1.0 + 1e-9;
+// The near sphere pairs' skin, in the smallest sphere's radius: a thinner one is listed more
+// often, a thicker one lists more pairs (docs/performance.md); the results do not depend on it.
+constexpr double skin_of_radius = 0.5;
 
 ClusterSystem::ClusterSystem(std::vector<ClusterShape> shapes, const ContactMaterial& material, double friction,
                              const Vec3& gravity)
     : shapes_(std::move(shapes)), law_(material), friction_(friction), gravity_(gravity) {
     if (shapes_.empty()) throw std::invalid_argument("ClusterSystem: no shapes");
-    for (const ClusterShape& s : shapes_) largest_reach_ = std::max(largest_reach_, s.reach);
+    double smallest_radius = INFINITY;
+    for (const ClusterShape& s : shapes_) {
+        largest_reach_ = std::max(largest_reach_, s.reach);
+        for (const Sphere& sphere : s.spheres) smallest_radius = std::min(smallest_radius, sphere.radius);
+    }
+    skin_ = skin_of_radius * smallest_radius;
 }
 
 Bodies ClusterSystem::make_bodies(const std::vector<int>& shape_of, const std::vector<Vec3>& positions,
@@ -24,6 +32,7 @@ Bodies ClusterSystem::make_bodies(const std::vector<int>& shape_of, const std::v
         throw std::invalid_argument("ClusterSystem::make_bodies: one shape, position and orientation per body");
     shape_of_ = shape_of;
     first_sphere_.clear();
+    reach_.clear();
     Bodies b;
     b.resize(shape_of.size());
     std::size_t spheres = 0;
@@ -34,9 +43,11 @@ Bodies ClusterSystem::make_bodies(const std::vector<int>& shape_of, const std::v
         b.position.set(i, positions[i]);
         b.orientation.set(i, orientations[i]);
         first_sphere_.push_back(spheres);
+        reach_.push_back(shape.reach);
         spheres += shape.spheres.size();
     }
     springs_.clear();
+    near_pairs_ = NearSpherePairs{};
     last_time_ = NAN;
     return b;
 }
@@ -98,11 +109,12 @@ void ClusterSystem::evaluate(Bodies& b, double t) const {
     };
 
     // Two levels: stones whose bounding spheres overlap (linked cells over the stones' centres),
-    // then their spheres. A cell of the largest sphere's size would hold dozens of the small
-    // ones, and a sphere-level search test ten times more pairs.
+    // then their spheres that may touch (near_pairs_). A cell of the largest sphere's size would
+    // hold dozens of the small ones, and a sphere-level search test ten times more pairs.
     positions_.resize(b.size());
     for (std::size_t i = 0; i < b.size(); ++i) positions_[i] = b.position[i];
     cells_.build(positions_, 2.0 * largest_reach_);
+    if (near_pairs_.stale(centres_)) near_pairs_.build(centres_, radii_, positions_, first_sphere_, reach_, skin_);
     auto sphere_pair = [&](std::size_t i, std::size_t j) {
         const std::size_t a = std::min(i, j), c = std::max(i, j);  // the normal from the lower index
         const Vec3 d = centres_[c] - centres_[a];
@@ -124,23 +136,12 @@ void ClusterSystem::evaluate(Bodies& b, double t) const {
         apply(body_a, point, -f);
         elastic_energy_ += law_.normal_energy(overlap, radius);
     };
+    // The stones in the order of the cells, and the spheres of two stones in the order of
+    // theirs: the sums' rounding does not depend on when the near pairs were listed.
     cells_.for_each_pair([&](std::size_t p, std::size_t q) {
         const double reach_p = reach_of(p), reach_q = reach_of(q);
         if ((positions_[p] - positions_[q]).squaredNorm() >= (reach_p + reach_q) * (reach_p + reach_q)) return;
-        const std::size_t p_end = first_sphere_[p] + sphere_count_of(p), q_end = first_sphere_[q] + sphere_count_of(q);
-        // The spheres of q within p's reach (with a margin far above round-off): no other can
-        // touch a sphere of p. The pairs keep their order, and with it the sums' rounding.
-        near_spheres_.clear();
-        for (std::size_t j = first_sphere_[q]; j < q_end; ++j) {
-            const double near = radii_[j] + reach_p;
-            if (!((centres_[j] - positions_[p]).squaredNorm() > near * near * pruning_margin)) near_spheres_.push_back(j);
-        }
-        if (near_spheres_.empty()) return;
-        for (std::size_t i = first_sphere_[p]; i < p_end; ++i) {
-            const double near = radii_[i] + reach_q;
-            if ((centres_[i] - positions_[q]).squaredNorm() >= near * near) continue;
-            for (const std::size_t j : near_spheres_) sphere_pair(i, j);
-        }
+        for (const auto& [i, j] : near_pairs_.pairs(p, q)) sphere_pair(i, j);
     });
 
     for (std::size_t body = 0, s = 0; body < b.size(); ++body) {

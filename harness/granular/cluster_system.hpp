@@ -8,6 +8,7 @@
 #include "harness/granular/ballast_shapes.hpp"
 #include "harness/granular/hertz_mindlin.hpp"
 #include "harness/granular/linked_cells.hpp"
+#include "harness/granular/near_sphere_pairs.hpp"
 #include "harness/granular/spring_table.hpp"
 
 #include <Eigen/Geometry>
@@ -68,8 +69,9 @@ private:
     Vec3 gravity_;
     std::vector<int> shape_of_;
     std::vector<std::size_t> first_sphere_;  // of each body, in the list of all spheres
-    double largest_reach_ = 0;
-    double reach_of(std::size_t body) const { return shapes_[static_cast<std::size_t>(shape_of_[body])].reach; }
+    double largest_reach_ = 0, skin_ = 0;
+    std::vector<double> reach_;  // of each body
+    double reach_of(std::size_t body) const { return reach_[body]; }
     std::size_t sphere_count_of(std::size_t body) const { return shapes_[static_cast<std::size_t>(shape_of_[body])].spheres.size(); }
 
     // The state of the contacts between evaluations, and scratch space reused at every step.
@@ -77,9 +79,10 @@ private:
     mutable double last_time_ = NAN, last_step_ = 0;
     mutable std::vector<Vec3> wall_loads_, centres_, positions_;
     mutable std::vector<double> radii_;
-    mutable std::vector<std::size_t> owner_, near_walls_, near_spheres_;
+    mutable std::vector<std::size_t> owner_, near_walls_;
     mutable double elastic_energy_ = 0;
     mutable LinkedCells cells_;
+    mutable NearSpherePairs near_pairs_;
 };
 
 }  // namespace rotbench
