@@ -21,13 +21,13 @@ using namespace rotbench::test;
 
 namespace {
 
-// A small silo: 60 stones, opened at 0.4 s, run to 1.2 s.
-const ParamOverrides small_silo = {{"clusters", {60}}, {"fill_time", {0.4}}, {"t_end", {1.2}}};
+// A brief silo: 60 stones, opened at 0.4 s, run to 1.2 s.
+const ParamOverrides brief_silo = {{"clusters", {60}}, {"fill_time", {0.4}}, {"t_end", {1.2}}};
 constexpr double silo_dt = 2e-5;
 
 double area(const WallFace& f) { return (f.corners[1] - f.corners[0]).cross(f.corners[3] - f.corners[0]).norm(); }
 
-// A built-in run of the small silo, as the samples a client writes, and the metrics its states
+// A built-in run of the brief silo, as the samples a client writes, and the metrics its states
 // at those samples give the scene's probe.
 struct SampledRun {
     std::string csv = std::string(granular_samples_header) + "\n";
@@ -35,7 +35,7 @@ struct SampledRun {
     std::vector<Sphere> last_spheres;  // of every stone at the last sample, as a picture draws them
 };
 SampledRun sampled_run() {
-    const auto made = make_scene("silo_discharge", small_silo);
+    const auto made = make_scene("silo_discharge", brief_silo);
     auto& scene = dynamic_cast<GranularScene&>(*made);
     const std::int64_t steps = step_count(scene.t_end(), silo_dt);
     const SampleSteps due = granular_sample_steps(scene, silo_dt);
@@ -101,11 +101,11 @@ TEST_CASE("granular client: the walls as rectangles cover each wall's region, le
 }
 
 TEST_CASE("granular client: the silo's spec holds rotbench's stones, material, packing and walls before and after the opening") {
-    const auto made_scene = make_scene("silo_discharge", small_silo);
+    const auto made_scene = make_scene("silo_discharge", brief_silo);
     auto& scene = dynamic_cast<GranularScene&>(*made_scene);
     const std::int64_t steps = step_count(scene.t_end(), silo_dt);
     const auto spec =
-        nlohmann::json::parse(granular_scene_json(scene, {"silo_discharge", "x", silo_dt, 0.0, small_silo}, scene.t_end(), steps));
+        nlohmann::json::parse(granular_scene_json(scene, {"silo_discharge", "x", silo_dt, 0.0, brief_silo}, scene.t_end(), steps));
     CHECK(spec["format"] == "rotbench-granular-scene 1");
     REQUIRE(spec["shapes"].size() == scene.system().shapes().size());
     for (std::size_t k = 0; k < spec["shapes"].size(); ++k) {
@@ -147,7 +147,7 @@ TEST_CASE("granular client: stones handed back at the sample times give the prob
     const fs::path good = dir / "good.csv";
     write(good, run.csv);
     const std::string id = copying_client(dir, "copying_good", good);
-    const RunResult r = made({"silo_discharge", id, silo_dt, 0.0, small_silo});
+    const RunResult r = made({"silo_discharge", id, silo_dt, 0.0, brief_silo});
     INFO(r.failure);
     REQUIRE(r.failure.empty());
     REQUIRE(run.metrics.size() == 5);
@@ -194,7 +194,7 @@ TEST_CASE("granular client: stones handed back at the sample times give the prob
     for (const auto& [text, message] : spoiled) {
         const fs::path file = dir / fmt::format("spoiled{}.csv", n);
         write(file, text);
-        const RunResult bad = made({"silo_discharge", copying_client(dir, fmt::format("copying_{}", n++), file), silo_dt, 0.0, small_silo});
+        const RunResult bad = made({"silo_discharge", copying_client(dir, fmt::format("copying_{}", n++), file), silo_dt, 0.0, brief_silo});
         INFO(n << ": " << bad.failure);
         if (message.empty()) {  // the same sample, its time written otherwise: no failure
             CHECK(bad.failure.empty());
@@ -208,14 +208,14 @@ TEST_CASE("granular client: stones handed back at the sample times give the prob
     fs::remove_all(dir);
 }
 
-TEST_CASE("granular client: LIGGGHTS runs rotbench's quick silo from its spec, and refuses the seed's restitution of 0", "[slow]") {
+TEST_CASE("granular client: LIGGGHTS runs rotbench's small silo from its spec, and refuses the seed's restitution of 0", "[slow]") {
     const std::string id = load_client(std::string(ROTBENCH_SOURCE_DIR) + "/examples/clients/liggghts/multisphere.toml");
     // LIGGGHTS 3.8.0 takes no restitution at or below 0.05: the adapter says so before it starts.
-    CHECK_THAT(made({"silo_discharge", id, silo_dt, 0.0, small_silo}).failure,
+    CHECK_THAT(made({"silo_discharge", id, silo_dt, 0.0, brief_silo}).failure,
                Catch::Contains("LIGGGHTS 3.8.0 refuses a restitution coefficient at or below 0.05"));
-    ParamOverrides quick = make_scene("silo_discharge", {})->quick_params();
-    quick.push_back({"restitution", {0.051}});
-    const RunResult r = made({"silo_discharge", id, silo_dt, 0.0, quick});
+    ParamOverrides small = small_silo;
+    small.push_back({"restitution", {0.051}});
+    const RunResult r = made({"silo_discharge", id, silo_dt, 0.0, small});
     INFO(r.failure);
     REQUIRE(r.failure.empty());
     // Every stone inserted and sampled (the adapter checks both); stones left the silo at a rate.
