@@ -50,9 +50,8 @@ void NearSpherePairs::build(const std::vector<Vec3>& centres, const std::vector<
                 for (std::size_t j = first_sphere[high]; j < end_of(high); ++j)
                     if (close(i, j)) low_first_.emplace_back(static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j));
             if (low_first_.size() == begin) continue;
-            for (std::size_t j = first_sphere[high]; j < end_of(high); ++j)
-                for (std::size_t i = first_sphere[low]; i < end_of(low); ++i)
-                    if (close(i, j)) high_first_.emplace_back(static_cast<std::uint32_t>(j), static_cast<std::uint32_t>(i));
+            for (std::size_t k = begin; k < low_first_.size(); ++k) high_first_.emplace_back(low_first_[k].second, low_first_[k].first);
+            std::sort(high_first_.begin() + static_cast<std::ptrdiff_t>(begin), high_first_.end());  // the higher stone's spheres first
             neighbours_.push_back({high, begin, low_first_.size()});
         }
     }
