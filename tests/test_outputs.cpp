@@ -173,12 +173,13 @@ TEST_CASE("outputs: two outputs of one command on one file are refused before an
     fs::remove_all(dir);
 }
 
-TEST_CASE("outputs: a signal outside a sweep ends the command by that signal and leaves no temporary file") {
+TEST_CASE("outputs: a signal outside a sweep ends the command by that signal, stops its gnuplot and leaves no temporary file") {
     const fs::path dir = fresh_dir("outputs_signal");
     REQUIRE(cli(with(one_run, {"--out", (dir / "o").string()})).status == 0);
-    // A gnuplot that takes its time: the SVG's temporary exists while rotbench waits for it.
+    // A gnuplot that takes its time and then writes its output, as gnuplot does: the SVG's
+    // temporary exists while rotbench waits for it, and a gnuplot left running would write it back.
     fs::create_directories(dir / "bin");
-    write(dir / "bin" / "gnuplot", "#!/bin/sh\nexec sleep 3\n");
+    write(dir / "bin" / "gnuplot", "#!/bin/sh\nout=${2#out=\\'}\nsleep 1\necho '<svg/>' > \"${out%\\'}\"\n");
     fs::permissions(dir / "bin" / "gnuplot", fs::perms::owner_all);
     const auto temporaries = [&] {
         std::size_t n = 0;
@@ -205,6 +206,8 @@ TEST_CASE("outputs: a signal outside a sweep ends the command by that signal and
     waitpid(pid, &status, 0);
     CHECK(WIFSIGNALED(status));
     CHECK(WTERMSIG(status) == SIGTERM);
+    CHECK(temporaries() == 0);
+    std::this_thread::sleep_for(std::chrono::milliseconds(1500));  // past the gnuplot's second
     CHECK(temporaries() == 0);
     fs::remove_all(dir);
 }

@@ -123,7 +123,10 @@ WorkerOutput run_program(std::vector<std::string> args, const std::string& direc
     const rlim_t address_space = static_cast<rlim_t>(megabytes) << 20;
     const bool limit_memory = memory_limit_enforced();
     const pid_t pid = ::fork();
-    if (pid > 0) ::setpgid(pid, pid);  // as the child does: whichever runs first, the group exists before a kill
+    if (pid > 0) {
+        ::setpgid(pid, pid);  // as the child does: whichever runs first, the group exists before a kill
+        list_child_group(pid);
+    }
     if (pid == 0) {
         const rlimit limit{address_space, address_space};
         if (limit_memory) ::setrlimit(RLIMIT_AS, &limit);
@@ -177,6 +180,7 @@ WorkerOutput run_program(std::vector<std::string> args, const std::string& direc
     // The worker's whole process group: it, and anything it started, whether it has exited or
     // not. Its pid is not free for reuse until it is reaped below, so no other group is hit.
     ::kill(-pid, SIGKILL);
+    release_child_group(pid);  // killed: a signal now need not
     for (auto& f : fds)
         if (f.fd >= 0) ::close(f.fd);
     while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {

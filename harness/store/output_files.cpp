@@ -14,6 +14,7 @@
 #include <mutex>
 #include <random>
 #include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 namespace rotbench {
@@ -53,7 +54,14 @@ void list_temporary(const std::filesystem::path& temporary) {
     }  // all in use: this one is not removed by a signal (256 writes at once)
 }
 
+// The process groups of the programs in flight (gnuplot, a client): a signal stops them before
+// it removes the temporaries, or a program that outlives rotbench would write one back.
+constexpr std::size_t child_slots = 64;
+std::atomic<pid_t> child_groups[child_slots];
+
 extern "C" void remove_temporaries_and_end(int signal) {
+    for (auto& group : child_groups)
+        if (const pid_t pid = group.load(std::memory_order_acquire); pid > 0 && ::kill(-pid, SIGKILL) == 0) ::waitpid(pid, nullptr, 0);
     for (auto& slot : temporaries)
         if (slot.used.load(std::memory_order_acquire)) ::unlink(slot.path);
     ::signal(signal, SIG_DFL);
@@ -65,6 +73,20 @@ extern "C" void remove_temporaries_and_end(int signal) {
 void release_temporary(const std::filesystem::path& temporary) {
     for (auto& slot : temporaries)
         if (slot.used.load(std::memory_order_acquire) && temporary.native() == slot.path) slot.used.store(false, std::memory_order_release);
+}
+
+void list_child_group(pid_t group) {
+    for (auto& slot : child_groups) {
+        pid_t free = 0;
+        if (slot.compare_exchange_strong(free, group, std::memory_order_acq_rel)) return;
+    }  // all in use: this one is not stopped by a signal (64 programs at once)
+}
+
+void release_child_group(pid_t group) {
+    for (auto& slot : child_groups) {
+        pid_t listed = group;
+        if (slot.compare_exchange_strong(listed, 0, std::memory_order_acq_rel)) return;
+    }
 }
 
 void remove_temporaries_on_signal() {

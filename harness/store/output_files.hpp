@@ -10,6 +10,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <sys/types.h>
 #include <utility>
 
 namespace rotbench {
@@ -31,8 +32,12 @@ std::pair<std::filesystem::path, int> open_temporary(const std::filesystem::path
 void release_temporary(const std::filesystem::path& temporary);
 
 // From now on SIGINT or SIGTERM, where nothing else handles them (an executor stops its runs
-// itself), first removes the temporaries in flight, then ends the process by that signal.
+// itself), first kills the programs in flight and removes the temporaries in flight, then ends
+// the process by that signal.
 void remove_temporaries_on_signal();
+// A started program's process group, listed from its start until it is killed, for that signal.
+void list_child_group(pid_t group);
+void release_child_group(pid_t group);
 
 // Appends `content` to the file (made if absent) in append mode: one write(2) a call, so
 // that records appended by several threads do not interleave. OutputError naming the file.
