@@ -49,6 +49,15 @@ inline fs::path fresh_dir(const std::string& name) {
     return dir;
 }
 
+// A scratch file or folder shared by the tests of one process, removed when the process ends.
+struct RemovedAtExit {
+    fs::path path;
+    ~RemovedAtExit() {
+        std::error_code ec;
+        fs::remove_all(path, ec);
+    }
+};
+
 inline std::string read(const fs::path& p) {
     std::ifstream in(p);
     return {std::istreambuf_iterator<char>(in), {}};

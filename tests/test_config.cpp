@@ -15,7 +15,9 @@ namespace fs = std::filesystem;
 namespace {
 
 std::string write_temp(const std::string& name, const std::string& text) {
-    const auto path = std::filesystem::temp_directory_path() / ("rotbench_" + std::to_string(::getpid()) + "_" + name);
+    static const RemovedAtExit folder{fresh_dir("config")};
+    fs::create_directories(folder.path);
+    const fs::path path = folder.path / name;
     std::ofstream(path) << text;
     return path.string();
 }
@@ -89,6 +91,7 @@ TEST_CASE("reference and trajectory exports have the contract columns") {
     const std::string run = read(dir / "run.csv");
     CHECK(run.rfind(std::string(trajectory_header) + "\n", 0) == 0);
     CHECK(std::count(run.begin(), run.end(), '\n') == 42);  // header + t = 0 + 40 rows (2000 steps, every 50th)
+    fs::remove_all(dir);
 }
 
 TEST_CASE("TOML text is made ASCII before Debian's toml++ 3.3.0 reads it, or refused with line and column") {

@@ -46,6 +46,7 @@ TEST_CASE("cost: a copy of direct passes and the same kernel made twice fails, w
     CHECK_THAT(r.out, Catch::Contains("PASS cylinder_free/plugin_direct: "));
     CHECK_THAT(r.out, Catch::Contains("FAIL cylinder_free/plugin_direct_slowed: "));
     CHECK_THAT(r.out, Catch::Contains("the whole interval is above"));
+    fs::remove_all(dir);
 }
 
 TEST_CASE("cost: the default gate's cost checks pass on a sound build with every core busy, plug-ins included") {
@@ -60,6 +61,7 @@ TEST_CASE("cost: the default gate's cost checks pass on a sound build with every
     CHECK(r.status == 0);
     CHECK_THAT(r.out, Catch::Contains("PASS cylinder_free/plugin_direct: "));  // "*" covers plug-ins
     CHECK_THAT(r.out, Catch::Contains("0 failed"));
+    fs::remove_all(dir);
 }
 
 TEST_CASE("cost: a plug-in built unoptimised or with assertions is flagged at load and its cost not judged") {
@@ -76,4 +78,5 @@ TEST_CASE("cost: a plug-in built unoptimised or with assertions is flagged at lo
     const Cli same = binary({"gate", (dir / "cost.toml").string(), "--plugin", PLUGIN_COSTED_DIRECT});
     CHECK(same.status == 0);
     CHECK_THAT(same.err, !Catch::Contains("warning"));
+    fs::remove_all(dir);
 }

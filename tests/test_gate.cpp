@@ -35,12 +35,12 @@ bool valid_json(const fs::path& file) {
 
 // The default gate without its cost checks, as a file.
 std::string default_gate_without_timing() {
-    static const std::string path = [] {
+    static const RemovedAtExit file{[] {
         const fs::path file = fs::temp_directory_path() / ("rotbench_default_gate_" + std::to_string(::getpid()) + ".toml");
         write(file, default_gate_checks(false));
-        return file.string();
-    }();
-    return path;
+        return file;
+    }()};
+    return file.path.string();
 }
 
 }  // namespace
@@ -326,4 +326,5 @@ TEST_CASE("the gate points a plug-in's failed claim at its registration, and nam
     const std::string summary = read(dir / "summary.json");
     CHECK_THAT(summary, Catch::Contains("\"gate_file_fnv1a\": \""));
     CHECK_THAT(summary, Catch::Contains("\"build\": \"" ROTBENCH_PLUGIN_BUILD "\""));
+    fs::remove_all(dir);
 }

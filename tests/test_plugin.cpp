@@ -94,6 +94,7 @@ TEST_CASE("plug-in: a run remembers what it ran, so report and merge describe a 
     REQUIRE(binary({"merge", (dir / "s1").string(), (dir / "s2").string(), "--out", (dir / "merged").string()}).status == 0);
     CHECK_THAT(read(dir / "merged" / "report.md"), Catch::Contains(row));
     CHECK(read(dir / "merged" / "schemes.json") == recorded);
+    fs::remove_all(dir);
 }
 
 TEST_CASE("plug-in: a schemes.json that is not rotbench's is refused in one line") {
@@ -112,4 +113,5 @@ TEST_CASE("plug-in: a schemes.json that is not rotbench's is refused in one line
         CHECK(one_line(r.err));
         CHECK_THAT(r.err, Catch::Contains("schemes.json: not a schemes.json rotbench wrote"));
     }
+    fs::remove_all(dir);
 }

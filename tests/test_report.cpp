@@ -18,7 +18,7 @@ namespace {
 
 // A quick run on a free top, a torque T(q) and a contact pair, with its stability study, once.
 const fs::path& report_dir() {
-    static const fs::path dir = [] {
+    static const RemovedAtExit dir{[] {
         const auto d = fresh_dir("report");
         const std::string schemes = "direct,exact_splitting,fincham,no_gyro,zvw";
         REQUIRE(cli({"run", "--quick", "--scenes", "asymmetric_free,dipole_top,sphere_pair", "--schemes", schemes, "--out", d.string()})
@@ -28,8 +28,8 @@ const fs::path& report_dir() {
                     .status == 0);
         REQUIRE(cli({"report", d.string()}).status == 0);
         return d;
-    }();
-    return dir;
+    }()};
+    return dir.path;
 }
 
 std::vector<std::string> lines(const std::string& text) {

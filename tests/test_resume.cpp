@@ -177,6 +177,7 @@ TEST_CASE("run --resume: bad uses are refused with one line") {
     CHECK(extra.status == 2);
     CHECK_THAT(extra.err, Catch::Contains("--resume DIR takes no other option"));
     fs::remove_all(dir);
+    fs::remove(dir.string() + ".stderr");
 }
 
 TEST_CASE("a journal record cut short by a kill counts as not finished and is cut off on resume") {
