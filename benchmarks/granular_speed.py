@@ -16,7 +16,7 @@ The table goes to OUT_DIR/granular_speed.csv, where `rotbench report OUT_DIR` sh
 section (as benchmarks/cost.py's cost.csv).
 
 Usage: benchmarks/granular_speed.py [--quick] [--t-end S] [--seed N] BUILD_DIR OUT_DIR
-  --quick   a small silo (100 stones, opened at 0.6 s, run to 2.6 s), seconds; the default is
+  --quick   the small silo of examples/small_silo.toml, seconds; the default is
             the silo itself, about 5 CPU-minutes for rotbench and 12 for LIGGGHTS
 """
 import argparse
@@ -53,7 +53,7 @@ def main():
     settings = ["--set", "silo_discharge.restitution=0.051", "--set", "silo_discharge.seed=%d" % a.seed]
     if a.t_end:
         settings += ["--set", "silo_discharge.t_end=%r" % a.t_end]
-    quick = ["--set", "silo_discharge.clusters=100", "--set", "silo_discharge.fill_time=0.6", "--set", "silo_discharge.t_end=2.6"] if a.quick else []
+    quick = ["--config", os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "examples", "small_silo.toml")] if a.quick else []
     with tempfile.TemporaryDirectory(prefix="granular_speed_") as scratch:
         # The spec, from rotbench itself: a client whose program keeps it (its run then fails: no samples).
         spec_path = os.path.join(scratch, "spec.json")

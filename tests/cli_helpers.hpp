@@ -2,6 +2,7 @@
 #pragma once
 
 #include "harness/cli/cli.hpp"
+#include "harness/cli/config.hpp"
 #include "harness/store/csv.hpp"
 #include "harness/store/parse.hpp"
 #include "harness/exec/executor.hpp"
@@ -134,11 +135,11 @@ inline Cli binary(const std::vector<std::string>& args, const std::vector<std::s
 }
 
 
-// A small silo (100 stones, opened at 0.6 s, run to 2.6 s): the silo's machinery in seconds,
-// for tests of anything but its physics (its heap is too thin for an angle of repose).
-inline const ParamOverrides small_silo = {{"clusters", {100}}, {"fill_time", {0.6}}, {"t_end", {2.6}}};
-inline const std::vector<std::string> small_silo_settings = {"--set", "silo_discharge.clusters=100", "--set", "silo_discharge.fill_time=0.6",
-                                                             "--set", "silo_discharge.t_end=2.6"};
+// The small silo of examples/small_silo.toml: the silo's machinery in seconds, for tests of
+// anything but its physics; as options and as a scene's parameters.
+inline const std::string small_silo_file = ROTBENCH_SOURCE_DIR "/examples/small_silo.toml";
+inline const std::vector<std::string> small_silo_settings = {"--config", small_silo_file};
+inline const ParamOverrides small_silo = load_config(small_silo_file).params.at("silo_discharge");
 
 inline void write(const fs::path& p, const std::string& text) {
     std::ofstream(p) << text;
