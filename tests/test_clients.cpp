@@ -211,3 +211,21 @@ TEST_CASE("clients: the report says whether a client is its counterpart's map, t
     }
     fs::remove_all(dir);
 }
+
+TEST_CASE("clients: the Yade adapter leaves nothing outside its working directory", "[slow]") {
+    // Yade makes /tmp/yade-XXXXXX whatever TMPDIR says and keeps an IPython profile in ~/.ipython.
+    const fs::path dir = fresh_dir("yade_leaves_nothing");
+    fs::create_directories(dir / "work");
+    fs::create_directories(dir / "home");
+    write(dir / "work" / "scene.json", client_scene_json(*make_scene("dipole_top"), {"dipole_top", "x", 0.01, 0.1}, 0.1, 10));
+    const std::string adapter = std::string(ROTBENCH_SOURCE_DIR) + "/examples/clients/yade/yade_newton.py";
+    REQUIRE(run_program({"/usr/bin/env", "-C", (dir / "work").string(), "HOME=" + (dir / "home").string(), "python3", adapter, "exact",
+                         "scene.json", "trajectory.csv"}) == 0);
+    const std::string rows = read(dir / "work" / "trajectory.csv");
+    CHECK(std::count(rows.begin(), rows.end(), '\n') == 12);  // the header, t = 0 and ten steps
+    const std::string yade_tmp = read(dir / "work" / "yade_tmp");
+    CHECK_THAT(yade_tmp, Catch::StartsWith("/tmp/yade-"));  // named by Yade itself ...
+    CHECK_FALSE(fs::exists(yade_tmp));                       // ... and gone
+    CHECK(fs::is_empty(dir / "home"));
+    fs::remove_all(dir);
+}

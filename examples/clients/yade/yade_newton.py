@@ -14,6 +14,8 @@ leapfrog's half-step values are put at whole steps: Yade starts from L(-dt/2) = 
 stdlib only; the Yade script and its output stay in the current directory.
 """
 import json
+import os
+import shutil
 import subprocess
 import sys
 
@@ -24,6 +26,8 @@ if spec["torque"]["law"] not in ("none", "body_constant", "dipole"):
 
 script = r'''
 import json
+import os
+open("yade_tmp", "w").write(os.path.dirname(O.tmpFilename()))  # Yade's own temporary folder, for removal
 spec = json.load(open(%(spec)r))
 exact = %(exact)r
 dt, inertia, law = spec["dt"], spec["inertia_body"], spec["torque"]
@@ -85,4 +89,14 @@ O.run(spec["steps"], True)
 out.close()
 ''' % {"spec": spec_path, "exact": mode == "exact", "out": out_path}
 open("rotbench_yade.py", "w").write(script)
-subprocess.run(["yade", "-n", "-x", "rotbench_yade.py"], check=True, stdout=subprocess.DEVNULL)
+# Yade keeps an IPython profile (IPYTHONDIR, else ~/.ipython): in the scratch directory, which
+# rotbench removes. It also makes /tmp/yade-XXXXXX whatever TMPDIR says, and leaves it: the script
+# names it, and it is removed here.
+env = dict(os.environ, IPYTHONDIR=os.path.join(os.getcwd(), "ipython"))
+try:
+    subprocess.run(["yade", "-n", "-x", "rotbench_yade.py"], check=True, stdout=subprocess.DEVNULL, env=env)
+finally:
+    if os.path.exists("yade_tmp"):
+        folder = open("yade_tmp").read()
+        if os.path.basename(folder).startswith("yade-") and os.path.isdir(folder):
+            shutil.rmtree(folder)
