@@ -99,18 +99,21 @@ std::string convergence_plots(const std::string& scene, const std::vector<const 
         });
     std::string work_setup = common + fmt::format("set xlabel 'CPU time of the run (s)'\nset ylabel '{}'\nset yrange [{}/3:{}*3]\n",
                                                   error_label(metric), format_number(e_lo), format_number(e_hi));
-    if (c_hi > 0) work_setup += fmt::format("set xrange [{}/1.5:{}*1.5]\n", format_number(c_lo), format_number(c_hi));
+    work_setup += fmt::format("set xrange [{}/1.5:{}*1.5]\n", format_number(c_lo), format_number(c_hi));
     const std::string work = panel_grid_script(gnuplot_output(fmt::format("work_precision_{}.svg", scene)),
                                                fmt::format("{}: {} against CPU time", scene, metric), work_setup, panels,
                                                [&](std::size_t p) { return series(p, "3:2") + "\n"; });
     const Drawn convergence = draw_with_gnuplot(dir, fmt::format("plots/convergence_{}.gp", scene), conv,
                                                 fmt::format("plots/convergence_{}.svg", scene));
-    const Drawn work_precision = draw_with_gnuplot(dir, fmt::format("plots/work_precision_{}.gp", scene), work,
-                                                   fmt::format("plots/work_precision_{}.svg", scene));
+    const bool timed = c_hi > 0;  // a client's CPU time is not measured: clients alone have no work-precision plot
+    const Drawn work_precision = timed ? draw_with_gnuplot(dir, fmt::format("plots/work_precision_{}.gp", scene), work,
+                                                           fmt::format("plots/work_precision_{}.svg", scene))
+                                       : Drawn{true, ""};
     if (!convergence.ok || !work_precision.ok)
         return fmt::format("(plots not drawn: {}; scripts in `plots/`)\n\n", convergence.ok ? work_precision.why : convergence.why);
-    return fmt::format("![convergence, {0}](plots/convergence_{0}.svg)\n\n![work-precision, {0}](plots/work_precision_{0}.svg)\n\n",
-                       scene);
+    std::string shown = fmt::format("![convergence, {0}](plots/convergence_{0}.svg)\n\n", scene);
+    if (timed) shown += fmt::format("![work-precision, {0}](plots/work_precision_{0}.svg)\n\n", scene);
+    return shown;
 }
 
 }  // namespace rotbench

@@ -174,6 +174,13 @@ TEST_CASE("clients: `run --client` sweeps a client beside the built-ins and says
     CHECK_THAT(r.out, Catch::Contains("skipped: client client_no_squish does not take scene cylinder_free"));
     const std::string orders = read(dir / "out" / "orders.csv");
     CHECK_THAT(orders, Catch::Contains("asymmetric_free,client_no_squish,omega_err_max,fit,2.00"));
+    // Alone, a client's runs have no CPU time: a convergence plot, and no work-precision plot to fail.
+    REQUIRE(cli({"--client", file.string(), "run", "--scenes", "asymmetric_free", "--schemes", "client_no_squish", "--quick", "--quiet",
+                 "--out", (dir / "alone").string()})
+                .status == 0);
+    const std::string report = read(dir / "alone" / "report.md");
+    CHECK_THAT(report, Catch::Contains("(plots/convergence_asymmetric_free.svg)"));
+    CHECK_THAT(report, !Catch::Contains("plots not drawn") && !Catch::Contains("work_precision"));
     fs::remove_all(dir);
 }
 
