@@ -19,6 +19,8 @@
 #include <fcntl.h>
 #include <fmt/format.h>
 #include <poll.h>
+#include <pthread.h>
+#include <sys/prctl.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -122,12 +124,25 @@ WorkerOutput run_program(std::vector<std::string> args, const std::string& direc
     }
     const rlim_t address_space = static_cast<rlim_t>(megabytes) << 20;
     const bool limit_memory = memory_limit_enforced();
+    // A signal between the fork and the group's listing would miss the child: held off until it
+    // is listed; and a rotbench that dies all the same (another thread took the signal) takes
+    // the child along.
+    sigset_t ending, before;
+    sigemptyset(&ending);
+    sigaddset(&ending, SIGINT);
+    sigaddset(&ending, SIGTERM);
+    ::pthread_sigmask(SIG_BLOCK, &ending, &before);
+    const pid_t parent = ::getpid();
     const pid_t pid = ::fork();
     if (pid > 0) {
         ::setpgid(pid, pid);  // as the child does: whichever runs first, the group exists before a kill
         list_child_group(pid);
     }
+    if (pid != 0) ::pthread_sigmask(SIG_SETMASK, &before, nullptr);
     if (pid == 0) {
+        ::sigprocmask(SIG_SETMASK, &before, nullptr);
+        ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+        if (::getppid() != parent) ::_exit(127);  // rotbench died before the line above
         const rlimit limit{address_space, address_space};
         if (limit_memory) ::setrlimit(RLIMIT_AS, &limit);
         ::dup2(out[1], 1);
