@@ -153,7 +153,8 @@ def callgrind_counts(path):
 def count_instructions(driver, plugin_args, scheme, sizes, tmp, timeout):
     """Per body-step for each (bodies, steps): (all instructions, those in libm)."""
     out = os.path.join(tmp, f"callgrind.{scheme}")
-    command = ["valgrind", "--tool=callgrind", "--collect-atstart=no", f"--callgrind-out-file={out}", driver,
+    # --vgdb=no: no gdbserver, whose pipes in /tmp a killed valgrind would leave behind.
+    command = ["valgrind", "--tool=callgrind", "--vgdb=no", "--collect-atstart=no", f"--callgrind-out-file={out}", driver,
                *plugin_args, scheme]
     for n, s in sizes:
         command += [str(n), str(s)]
