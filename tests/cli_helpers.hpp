@@ -136,10 +136,14 @@ inline Cli binary(const std::vector<std::string>& args, const std::vector<std::s
 
 
 // The small silo of examples/small_silo.toml: the silo's machinery in seconds, for tests of
-// anything but its physics; as options and as a scene's parameters.
+// anything but its physics; as options and as a scene's parameters (read when first asked for:
+// the file names a scene, which the registry knows only once static initialisation is over).
 inline const std::string small_silo_file = ROTBENCH_SOURCE_DIR "/examples/small_silo.toml";
 inline const std::vector<std::string> small_silo_settings = {"--config", small_silo_file};
-inline const ParamOverrides small_silo = load_config(small_silo_file).params.at("silo_discharge");
+inline const ParamOverrides& small_silo() {
+    static const ParamOverrides params = load_config(small_silo_file).params.at("silo_discharge");
+    return params;
+}
 
 inline void write(const fs::path& p, const std::string& text) {
     std::ofstream(p) << text;

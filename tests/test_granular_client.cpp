@@ -213,7 +213,7 @@ TEST_CASE("granular client: LIGGGHTS runs rotbench's small silo from its spec, a
     // LIGGGHTS 3.8.0 takes no restitution at or below 0.05: the adapter says so before it starts.
     CHECK_THAT(made({"silo_discharge", id, silo_dt, 0.0, brief_silo}).failure,
                Catch::Contains("LIGGGHTS 3.8.0 refuses a restitution coefficient at or below 0.05"));
-    ParamOverrides small = small_silo;
+    ParamOverrides small = small_silo();
     small.push_back({"restitution", {0.051}});
     const RunResult r = made({"silo_discharge", id, silo_dt, 0.0, small});
     INFO(r.failure);

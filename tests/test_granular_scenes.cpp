@@ -107,7 +107,7 @@ TEST_CASE("granular scenes: a silo whose flow stops under an arch is flagged clo
     // The small silo (100 stones, opened at 0.6 s): at 0.05 m (about one stone) the stones span the
     // orifice at once and 95 % of them stay; at 0.3 m all but the corner wedges leave by 2.3 s.
     const auto run = [](double orifice, double t_end) {
-        ParamOverrides params = small_silo;
+        ParamOverrides params = small_silo();
         params.push_back({"orifice", {orifice}});
         params.push_back({"t_end", {t_end}});
         return run_one({"silo_discharge", "richardson", 2e-5, 0.0, params}, {.measure_time = false});
