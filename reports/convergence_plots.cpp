@@ -38,11 +38,12 @@ std::string convergence_plots(const std::string& scene, const std::vector<const 
         for (const RunResult* r : runs) {
             const double e = r->value(metric);
             if (r->spec.scheme != scheme || !std::isfinite(e) || !(e > 0)) continue;
+            const double cpu = r->value(metric::cpu_seconds);
             points[scheme].push_back({r->spec.dt, e});
-            data += fmt::format("{} {} {}\n", format_number(r->spec.dt), format_number(e), format_number(r->value(metric::cpu_seconds)));
+            data += fmt::format("{} {} {}\n", format_number(r->spec.dt), format_number(e), format_number(cpu));
             lo = std::min(lo, r->spec.dt), hi = std::max(hi, r->spec.dt);
             e_lo = std::min(e_lo, e), e_hi = std::max(e_hi, e);
-            if (r->value(metric::cpu_seconds) > 0) c_lo = std::min(c_lo, r->value(metric::cpu_seconds)), c_hi = std::max(c_hi, r->value(metric::cpu_seconds));
+            if (cpu > 0) c_lo = std::min(c_lo, cpu), c_hi = std::max(c_hi, cpu);
         }
         data += "\n\n";
     }
@@ -51,7 +52,8 @@ std::string convergence_plots(const std::string& scene, const std::vector<const 
 
     const auto panels = family_panels(set, schemes, best);
     const auto index_of = [&](const std::string& s) { return std::find(schemes.begin(), schemes.end(), s) - schemes.begin(); };
-    // A curve another one of the panel covers (the same errors to 1e-9) says so in the key.
+    // A curve another one of the panel covers (the same errors to 1e-9) says so in the key, on a
+    // line of its own (a key entry without a sample): two ids side by side overrun the key's column.
     const auto same_as = [&](const std::vector<std::string>& panel, std::size_t i) -> std::string {
         const auto& mine = points[panel[i]];
         for (std::size_t j = 0; j < i; ++j) {
@@ -60,14 +62,14 @@ std::string convergence_plots(const std::string& scene, const std::vector<const 
                 std::equal(mine.begin(), mine.end(), theirs.begin(), [](const auto& a, const auto& b) {
                     return a.first == b.first && std::abs(a.second - b.second) <= 1e-9 * std::abs(b.second);
                 }))
-                return " (= " + panel[j] + ")";
+                return fmt::format(", keyentry with lines lt nodraw title '(= {})'", panel[j]);
         }
         return "";
     };
     const auto series = [&](std::size_t p, const std::string& columns) {
         std::string line = "plot ";
         for (std::size_t i = 0; i < panels[p].schemes.size(); ++i)
-            line += fmt::format("{}file index {} using {} with linespoints {} title '{}{}'", i ? ", \\\n     " : "",
+            line += fmt::format("{}file index {} using {} with linespoints {} title '{}'{}", i ? ", \\\n     " : "",
                                 index_of(panels[p].schemes[i]), columns, scheme_style(set, panels[p].schemes[i], i),
                                 panels[p].schemes[i], same_as(panels[p].schemes, i));
         return line;
@@ -97,18 +99,20 @@ std::string convergence_plots(const std::string& scene, const std::vector<const 
             return series(p, "1:2") + ", \\\n     [x=lo:hi] slope(x, 1) dt 2 lc 'gray50' notitle, [x=lo:hi] slope(x, 2) dt 3 lc 'gray30' "
                                       "notitle, [x=lo:hi] slope(x, 4) dt 4 lc 'gray10' notitle\n";
         });
-    std::string work_setup = common + fmt::format("set xlabel 'CPU time of the run (s)'\nset ylabel '{}'\nset yrange [{}/3:{}*3]\n",
-                                                  error_label(metric), format_number(e_lo), format_number(e_hi));
-    work_setup += fmt::format("set xrange [{}/1.5:{}*1.5]\n", format_number(c_lo), format_number(c_hi));
-    const std::string work = panel_grid_script(gnuplot_output(fmt::format("work_precision_{}.svg", scene)),
-                                               fmt::format("{}: {} against CPU time", scene, metric), work_setup, panels,
-                                               [&](std::size_t p) { return series(p, "3:2") + "\n"; });
     const Drawn convergence = draw_with_gnuplot(dir, fmt::format("plots/convergence_{}.gp", scene), conv,
                                                 fmt::format("plots/convergence_{}.svg", scene));
     const bool timed = c_hi > 0;  // a client's CPU time is not measured: clients alone have no work-precision plot
-    const Drawn work_precision = timed ? draw_with_gnuplot(dir, fmt::format("plots/work_precision_{}.gp", scene), work,
-                                                           fmt::format("plots/work_precision_{}.svg", scene))
-                                       : Drawn{true, ""};
+    Drawn work_precision{true, ""};
+    if (timed) {
+        const std::string work_setup = common + fmt::format(
+            "set xlabel 'CPU time of the run (s)'\nset ylabel '{}'\nset yrange [{}/3:{}*3]\nset xrange [{}/1.5:{}*1.5]\n",
+            error_label(metric), format_number(e_lo), format_number(e_hi), format_number(c_lo), format_number(c_hi));
+        const std::string work = panel_grid_script(gnuplot_output(fmt::format("work_precision_{}.svg", scene)),
+                                                   fmt::format("{}: {} against CPU time", scene, metric), work_setup, panels,
+                                                   [&](std::size_t p) { return series(p, "3:2") + "\n"; });
+        work_precision = draw_with_gnuplot(dir, fmt::format("plots/work_precision_{}.gp", scene), work,
+                                           fmt::format("plots/work_precision_{}.svg", scene));
+    }
     if (!convergence.ok || !work_precision.ok)
         return fmt::format("(plots not drawn: {}; scripts in `plots/`)\n\n", convergence.ok ? work_precision.why : convergence.why);
     std::string shown = fmt::format("![convergence, {0}](plots/convergence_{0}.svg)\n\n", scene);

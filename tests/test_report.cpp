@@ -121,9 +121,9 @@ TEST_CASE("the report of a quick run with its stability study") {
         CHECK(stability_csv(rows) == read(report_dir() / "stability.csv"));
         CHECK(stability_spin_csv(rows) == read(report_dir() / "stability_spin.csv"));
     }
-    SECTION("a scheme has one colour and one marker in every plot, and a covered curve says what covers it") {
+    SECTION("a scheme has one colour and one marker in every plot") {
         std::map<std::string, std::set<std::string>> styles;  // scheme -> "lc rgb '#...' pt N" seen
-        const std::regex series(R"((lc rgb '#[0-9a-f]{6}')(?: pt (\d+))?.*? title '([a-z0-9_]+)( \(= [a-z0-9_]+\))?')");
+        const std::regex series(R"((lc rgb '#[0-9a-f]{6}')(?: pt (\d+))?.*? title '([a-z0-9_]+)')");
         for (const auto& entry : fs::directory_iterator(report_dir() / "plots")) {
             if (entry.path().extension() != ".gp" || entry.path().filename().string().rfind("granular", 0) == 0) continue;
             const std::string script = read(entry.path());
@@ -175,6 +175,16 @@ TEST_CASE("the report of a quick run with its stability study") {
         }
         CHECK(scripts >= 6);
     }
+}
+
+TEST_CASE("a convergence curve another one covers says which, on a key line of its own") {
+    // Without torque zvw_corrected is zvw to round-off (seed eqs. 57, 63): the later curve is covered.
+    const RemovedAtExit dir{fresh_dir("report_covered")};
+    REQUIRE(cli({"run", "--quick", "--scenes", "asymmetric_free", "--schemes", "zvw,zvw_corrected", "--out", dir.path.string()})
+                .status == 0);
+    const std::string script = read(dir.path / "plots" / "convergence_asymmetric_free.gp");
+    CHECK_THAT(script, Catch::Contains("title 'zvw_corrected', keyentry with lines lt nodraw title '(= zvw)'"));
+    CHECK_THAT(script, !Catch::Contains("title '(= zvw_corrected)'"));
 }
 
 TEST_CASE("a stability.csv that rotbench stability could not have written is refused, naming the line") {
