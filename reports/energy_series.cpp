@@ -15,6 +15,25 @@
 namespace rotbench {
 namespace {
 
+// A run that blew up (its failure, the stability criterion's verdict) would set its panel's scale
+// and flatten the others to a line: a panel is scaled to the runs that did not, and the key says
+// when each other one blew up (or that it failed otherwise).
+std::string y_range(const std::vector<const RunResult*>& panel_runs) {
+    double lo = INFINITY, hi = -INFINITY;
+    bool blown = false;
+    for (const RunResult* r : panel_runs) {
+        if (!r->failure.empty()) {
+            blown = true;
+            continue;
+        }
+        for (const auto& row : r->series)
+            if (std::isfinite(row.at(1))) lo = std::min(lo, row.at(1)), hi = std::max(hi, row.at(1));
+    }
+    if (!blown || !(hi > lo)) return "set autoscale y\n";
+    const double pad = 0.05 * (hi - lo);
+    return fmt::format("set yrange [{}:{}]\n", format_number(lo - pad), format_number(hi + pad));
+}
+
 std::string plot_script(const std::string& scene, double dt, const std::vector<const RunResult*>& runs, const ResultSet& set) {
     std::vector<std::string> schemes;
     for (const RunResult* r : runs) schemes.push_back(r->spec.scheme);
@@ -22,12 +41,19 @@ std::string plot_script(const std::string& scene, double dt, const std::vector<c
     const std::string setup = "set datafile separator ','\nset xlabel 't (s)'\nset ylabel '(E - E0) / |E0| (relative)'\nset grid\n";
     return panel_grid_script(gnuplot_output(fmt::format("energy_{}_dt{}.svg", scene, dt_tag(dt))),
                              fmt::format("Relative energy error, {}, dt = {:g} s", scene, dt), setup, panels, [&](std::size_t p) {
-                                 std::string line = "plot ";
-                                 for (std::size_t i = 0; i < panels[p].schemes.size(); ++i) {
-                                     const auto at = std::find(schemes.begin(), schemes.end(), panels[p].schemes[i]) - schemes.begin();
-                                     line += fmt::format("{}'../series/{}' using 1:2 with lines {} title '{}'",
-                                                         i ? ", \\\n     " : "", series_file_name(*runs[at]),
-                                                         scheme_style(set, panels[p].schemes[i], i), panels[p].schemes[i]);
+                                 std::vector<const RunResult*> panel_runs;
+                                 for (const auto& scheme : panels[p].schemes)
+                                     panel_runs.push_back(runs[std::find(schemes.begin(), schemes.end(), scheme) - schemes.begin()]);
+                                 std::string line = y_range(panel_runs) + "plot ";
+                                 for (std::size_t i = 0; i < panel_runs.size(); ++i) {
+                                     const RunResult& r = *panel_runs[i];
+                                     line += fmt::format("{}'../series/{}' using 1:2 with lines {} title '{}'", i ? ", \\\n     " : "",
+                                                         series_file_name(r), scheme_style(set, r.spec.scheme, i), r.spec.scheme);
+                                     const double failed_at = r.value(metric::fail_time);  // NaN for a run that threw
+                                     if (!r.failure.empty())
+                                         line += fmt::format(", keyentry with lines lt nodraw title '{}'",
+                                                             std::isfinite(failed_at) ? fmt::format("(blew up, t = {:.3g} s)", failed_at)
+                                                                                      : std::string("(failed)"));
                                  }
                                  return line + "\n";
                              });

@@ -187,6 +187,28 @@ TEST_CASE("a convergence curve another one covers says which, on a key line of i
     CHECK_THAT(script, !Catch::Contains("title '(= zvw_corrected)'"));
 }
 
+TEST_CASE("an energy plot is scaled to the runs that did not blow up, and says when the others did") {
+    // At dt = 4e-4 s on the ellipsoid pair zvw blows up (its energy grows a millionfold) and
+    // zvw_corrected stays within about 1 %: the panel they share takes zvw_corrected's scale.
+    const RemovedAtExit dir{fresh_dir("report_blown")};
+    REQUIRE(cli({"run", "--scenes", "ellipsoid_pair", "--schemes", "zvw,zvw_corrected,richardson", "--dt", "4e-4", "--out",
+                 dir.path.string()})
+                .status == 0);
+    double bounded = 0;  // zvw_corrected's largest |energy error|
+    for (const auto& row : parse_csv(read(dir.path / "series" / "energy_ellipsoid_pair_zvw_corrected_dt0.0004.csv"), "series"))
+        if (row.fields[0] != "t") bounded = std::max(bounded, std::abs(std::stod(row.fields[1])));
+    REQUIRE(bounded > 0);
+    const std::string script = read(dir.path / "plots" / "energy_ellipsoid_pair_dt0.0004.gp");
+    std::smatch m;
+    REQUIRE(std::regex_search(script, m, std::regex(R"(set yrange \[([^:]+):([^\]]+)\]\nplot [^\n]*zvw_dt)")));
+    // The range is the bounded run's, padded by 5 % of its width on each side: within 1.1 of its largest error.
+    CHECK(std::abs(std::stod(m[1])) <= 1.1 * bounded);
+    CHECK(std::abs(std::stod(m[2])) <= 1.1 * bounded);
+    CHECK(std::regex_search(script, std::regex(R"(title 'zvw', keyentry with lines lt nodraw title '\(blew up, t = [0-9.e-]+ s\)')")));
+    CHECK_THAT(script, !Catch::Contains("title 'zvw_corrected', keyentry"));
+    CHECK_THAT(script, Catch::Contains("set autoscale y\nplot '../series/energy_ellipsoid_pair_richardson"));
+}
+
 TEST_CASE("a stability.csv that rotbench stability could not have written is refused, naming the line") {
     const fs::path dir = fs::temp_directory_path() / ("rotbench_stability_forged_" + std::to_string(::getpid()));
     fs::remove_all(dir);
