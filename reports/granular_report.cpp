@@ -17,7 +17,8 @@ struct SceneMetrics {
 };
 const std::vector<SceneMetrics> granular_scenes = {
     {"silo_discharge", {"discharge_time", "mass_flow_rate", "repose_angle", "mass_left_end", "clogged"}},
-    {"direct_shear", {"shear_stress_peak", "shear_stress_final", "normal_stress_mean", "inertial_number", "escaped_stones"}},
+    {"direct_shear",
+     {"shear_stress_peak", "shear_stress_final", "normal_stress_mean", "inertial_number", "solid_fraction", "escaped_stones"}},
 };
 
 // Seed 000's published differences from its quaternion scheme (Tables 4 and 5), in %, by the

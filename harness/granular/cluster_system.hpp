@@ -45,6 +45,7 @@ public:
     const std::vector<int>& shape_of() const { return shape_of_; }
 
     std::vector<Wall> walls;  // scenes move them between evaluations
+    void set_friction(double friction) { friction_ = friction; }  // between stones; a scene may change it too
 
     // Forces and torques at time t (world frame), gravity included. The tangential springs
     // are advanced by the time since the previous evaluation; an evaluation that does not
