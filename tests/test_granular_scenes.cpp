@@ -124,21 +124,28 @@ TEST_CASE("granular scenes: a silo whose flow stops under an arch is flagged clo
 
 namespace {
 
+// A law's runs: `richardson` at dt = 2e-5 s on the scene of `key` (SCENE.KEY), one process per
+// value of the key, all at once, each into dir/VALUE; `extra` adds to each.
+void run_each(const fs::path& dir, const std::string& key, const std::vector<double>& values,
+              const std::vector<std::string>& extra) {
+    std::vector<pid_t> runs;
+    for (const double value : values) {
+        std::vector<std::string> args = {ROTBENCH_EXE, "run", "--scenes", key.substr(0, key.find('.')), "--schemes", "richardson",
+                                         "--dt", "2e-5", "--set", key + "=" + std::to_string(value), "--out",
+                                         (dir / std::to_string(value)).string(), "--quiet", "--jobs", "1"};
+        args.insert(args.end(), extra.begin(), extra.end());
+        runs.push_back(start_program(args));
+    }
+    for (const pid_t run : runs) REQUIRE(wait_program(run) == 0);
+}
+
 // Issue 36's range for ballast in a direct shear test (35-60 degrees) at the seed's three normal
 // stresses, with tau rising in sigma: the angle from the peak shear stress over the stress the
 // lid held, both means over the members. `richardson` at dt = 2e-5 s, a process per stress.
 void check_shear_laws(const std::string& name, const std::vector<std::string>& extra) {
     const std::vector<double> stresses = {27e3, 51e3, 75e3};
     const fs::path dir = fresh_dir(name);
-    std::vector<pid_t> runs;
-    for (const double sigma : stresses) {
-        std::vector<std::string> args = {ROTBENCH_EXE, "run", "--scenes", "direct_shear", "--schemes", "richardson", "--dt", "2e-5",
-                                         "--set", "direct_shear.normal_stress=" + std::to_string(sigma), "--out",
-                                         (dir / std::to_string(sigma)).string(), "--quiet", "--jobs", "1"};
-        args.insert(args.end(), extra.begin(), extra.end());
-        runs.push_back(start_program(args));
-    }
-    for (const pid_t run : runs) REQUIRE(wait_program(run) == 0);
+    run_each(dir, "direct_shear.normal_stress", stresses, extra);
     double last_peak = 0;
     std::ostringstream measured;  // the figures, for whoever runs the test by hand
     for (const double sigma : stresses) {
@@ -182,15 +189,7 @@ namespace {
 void check_silo_laws(const std::string& name, const std::vector<std::string>& extra) {
     const std::vector<double> widths = {0.2, 0.225, 0.25, 0.275};
     const fs::path dir = fresh_dir(name);
-    std::vector<pid_t> runs;
-    for (const double width : widths) {
-        std::vector<std::string> args = {ROTBENCH_EXE, "run", "--scenes", "silo_discharge", "--schemes", "richardson", "--dt", "2e-5",
-                                         "--set", "silo_discharge.orifice=" + std::to_string(width), "--out",
-                                         (dir / std::to_string(width)).string(), "--quiet", "--jobs", "1"};
-        args.insert(args.end(), extra.begin(), extra.end());
-        runs.push_back(start_program(args));
-    }
-    for (const pid_t run : runs) REQUIRE(wait_program(run) == 0);
+    run_each(dir, "silo_discharge.orifice", widths, extra);
     std::vector<double> flow_root;  // W^(2/5)
     double angle = NAN;
     for (const double width : widths) {
