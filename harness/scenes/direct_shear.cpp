@@ -191,7 +191,8 @@ private:
                 normal += s.normal / static_cast<double>(samples_.size());
                 if (s.displacement >= 0.9 * total) final_sum += s.shear, final_n += 1;
             }
-            const double inertial = scene_.speed_ / height_ * scene_.mean_size_ * std::sqrt(scene_.params.number("density") / normal);
+            const double density = scene_.params.number("density");
+            const double inertial = scene_.speed_ / height_ * scene_.mean_size_ * std::sqrt(density / normal);
             // A check on the model: stones whose centre left the box's footprint (the halves'
             // union, x in [-box/2, box/2 + u], |y| <= box/2) by the end.
             double escaped = 0;
@@ -201,7 +202,7 @@ private:
                 escaped += x.x() < -h || x.x() > h + u || std::abs(x.y()) > h;
             }
             double volume = 0;  // of the stones
-            for (const double m : last_.mass) volume += m / scene_.params.number("density");
+            for (const double m : last_.mass) volume += m / density;
             return {{"shear_stress_peak", peak},
                     {"shear_stress_final", final_n > 0 ? final_sum / final_n : NAN},
                     {"normal_stress_mean", samples_.empty() ? NAN : normal},
