@@ -197,6 +197,20 @@ TEST_CASE("gate: the CI outputs (JUnit, summary.json, gate.csv, Markdown, annota
     fs::remove_all(dir);
 }
 
+TEST_CASE("gate: a step summary that cannot take the text loses only itself") {
+    const fs::path dir = fresh_dir("gate_step_full");
+    fs::create_directories(dir);
+    write(dir / "g.toml", "[[check]]\nscene = \"asymmetric_free\"\nschemes = [\"zvw\"]\nmax_error = 0.05\ndt = 0.05\nwhy = \"x\"\n");
+    // /dev/full opens for appending (the check before any work passes) and refuses every byte.
+    const Cli r = binary({"gate", (dir / "g.toml").string(), "--out", (dir / "out").string(), "--summary", (dir / "summary.md").string()},
+                         {"GITHUB_STEP_SUMMARY=/dev/full"});
+    CHECK(r.status == 3);
+    CHECK_THAT(r.err, Catch::Contains("/dev/full"));
+    CHECK_THAT(read(dir / "out" / "gate.csv"), Catch::Contains(",pass,"));
+    CHECK_THAT(read(dir / "summary.md"), Catch::StartsWith("## rotbench gate: passed"));
+    fs::remove_all(dir);
+}
+
 TEST_CASE("gate: JUnit XML stays well-formed for any message (control characters, invalid UTF-8, markup)") {
     GateResult result;
     Verdict v;

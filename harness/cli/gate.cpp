@@ -118,13 +118,14 @@ public:
         }
         const std::string markdown = gate_markdown(result, "gate", file_);
         if (!summary_.empty()) write_output_file(summary_, markdown);
-        if (!step.empty()) append_to_file(step, markdown);
         if (dir) {
             dir->write("gate.csv", gate_csv(result));
             dir->write("summary.json", json);
             write_run_files(*dir, result.runs);
             Journal::discard(dir->path());
         }
+        // Last: a runner's file that takes the empty check but not the text loses only itself.
+        if (!step.empty()) append_to_file(step, markdown);
         return result.passed() ? 0 : 1;
     }
 
