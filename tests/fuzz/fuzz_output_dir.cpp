@@ -20,6 +20,14 @@ namespace {
 const fs::path root = fs::temp_directory_path() / ("rotbench_fuzz_output_dir_" + std::to_string(::getpid()));
 const fs::path out = root / "out", beside = root / "precious";
 
+// libFuzzer ends by exit(), which runs this: the scratch folder goes with the fuzzer.
+const struct RemoveAtExit {
+    ~RemoveAtExit() {
+        std::error_code ec;
+        fs::remove_all(root, ec);
+    }
+} remove_at_exit;
+
 void put(const fs::path& file, const std::string& text) { std::ofstream(file, std::ios::binary) << text; }
 
 std::string get(const fs::path& file) {
