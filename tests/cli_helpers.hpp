@@ -7,6 +7,7 @@
 #include "harness/store/parse.hpp"
 #include "harness/exec/executor.hpp"
 #include "harness/exec/run.hpp"
+#include "removed_at_exit.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -49,15 +50,6 @@ inline fs::path fresh_dir(const std::string& name) {
     fs::remove_all(dir);
     return dir;
 }
-
-// A scratch file or folder shared by the tests of one process, removed when the process ends.
-struct RemovedAtExit {
-    fs::path path;
-    ~RemovedAtExit() {
-        std::error_code ec;
-        fs::remove_all(path, ec);
-    }
-};
 
 inline std::string read(const fs::path& p) {
     std::ifstream in(p);

@@ -7,6 +7,7 @@
 #include "harness/store/output_dir.hpp"
 #include "harness/store/output_files.hpp"
 #include "tests/fuzz/fuzz_input.hpp"
+#include "tests/removed_at_exit.hpp"
 
 #include <filesystem>
 #include <fstream>
@@ -20,13 +21,8 @@ namespace {
 const fs::path root = fs::temp_directory_path() / ("rotbench_fuzz_output_dir_" + std::to_string(::getpid()));
 const fs::path out = root / "out", beside = root / "precious";
 
-// libFuzzer ends by exit(), which runs this: the scratch folder goes with the fuzzer.
-const struct RemoveAtExit {
-    ~RemoveAtExit() {
-        std::error_code ec;
-        fs::remove_all(root, ec);
-    }
-} remove_at_exit;
+// libFuzzer ends by exit(): the scratch folder goes with the fuzzer.
+const test::RemovedAtExit scratch{root};
 
 void put(const fs::path& file, const std::string& text) { std::ofstream(file, std::ios::binary) << text; }
 
