@@ -10,8 +10,8 @@ cd "$(dirname "$0")"
 packages=(cmake ninja-build g++ libeigen3-dev libxsimd-dev catch2 libbenchmark-dev valgrind libboost-dev libgsl-dev libfmt-dev
           libcli11-dev libtomlplusplus-dev nlohmann-json3-dev gnuplot-nox python3)  # python3: benchmarks/cost.py, clients
 # The DEM codes the clients' gate runs (examples/clients, a slow test): only for the tests (yade is
-# about 110 MB to fetch).
-[ "${1:-build}" = test ] && packages+=(lammps yade liggghts)
+# about 110 MB to fetch); python3-venv for the project's venv of Kratos's pinned wheels (below).
+[ "${1:-build}" = test ] && packages+=(lammps yade liggghts python3-venv)
 
 missing=()
 for p in "${packages[@]}"; do
@@ -22,6 +22,13 @@ if ((${#missing[@]})); then
   sudo=""; [ "$(id -u)" -eq 0 ] || sudo="sudo"
   $sudo apt-get update -qq
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+
+# Kratos DEM (examples/clients/kratos) is published as PyPI wheels only: for the tests, its pinned
+# wheels go into the project's own venv, .venv, never into the system Python.
+if [ "${1:-build}" = test ]; then
+  [ -x .venv/bin/python3 ] || python3 -m venv .venv
+  .venv/bin/python3 -m pip install -q --disable-pip-version-check -r examples/clients/kratos/requirements.txt
 fi
 
 build=${BUILD_DIR:-build}
