@@ -159,21 +159,41 @@ void table1_section(std::string& md, const std::vector<RunResult>& results) {
           "solution: a mean of squares would fall as dt^4, not dt^2 as the table does. Including t = 0 would "
           "shift the dt = 1e-2 row by 1 % and leave the others unchanged. The seed's eq. 65b prints "
           "w'y = sin 50t; Euler's equations give cos 50t for this start. The seed's \"Quaternion int.\" is "
-          "`zvw_corrected`; `zvw` gives the same numbers without torque, as the seed says.\n\n"
-          "| dt (s) | scheme | | published | computed | difference | within 1 % |\n"
-          "|---:|---|---|---:|---:|---:|---|\n";
-    int agree_main = 0, total_main = 0;
+          "`zvw_corrected`; `zvw` gives the same numbers without torque, as the seed says.\n\n";
+    const bool shipped_ran = std::any_of(rows.begin(), rows.end(), [](const auto& r) { return r.shipped.has_value(); });
+    if (shipped_ran)
+        md += "*Kratos as shipped*: the same entry from the seed's own code, Kratos DEM's binary, through the clients of "
+              "`examples/clients/kratos` (the seed's schemes under Velocity_Verlet; docs/clients.md), where they ran.\n\n"
+              "| dt (s) | scheme | | published | computed | difference | within 1 % | Kratos as shipped | difference | within 1 % |\n"
+              "|---:|---|---|---:|---:|---:|---|---:|---:|---|\n";
+    else
+        md += "| dt (s) | scheme | | published | computed | difference | within 1 % |\n"
+              "|---:|---|---|---:|---:|---:|---|\n";
+    int agree_main = 0, total_main = 0, shipped_agree = 0, shipped_total = 0;
     std::vector<const Table1Comparison*> noted;
     for (const auto& row : rows) {
         const bool main_range = row.entry.dt >= 1e-5;
         total_main += main_range;
         agree_main += main_range && row.agrees;
-        md += fmt::format("| {:g} | {} ({}) | w'{} | {:.2e} | {:.4e} | {:+.2f} % | {} |\n", row.entry.dt,
+        shipped_total += main_range && row.shipped;
+        shipped_agree += main_range && row.shipped_agrees;
+        md += fmt::format("| {:g} | {} ({}) | w'{} | {:.2e} | {:.4e} | {:+.2f} % | {} |", row.entry.dt,
                           row.entry.published_name, row.entry.scheme, row.entry.component, row.entry.published,
                           row.computed, 100.0 * row.relative_difference, row.agrees ? "yes" : "**no**");
+        if (shipped_ran && row.shipped)
+            md += fmt::format(" {:.4e} | {:+.2f} % | {} |", *row.shipped, 100.0 * (*row.shipped / row.entry.published - 1.0),
+                              row.shipped_agrees ? "yes" : "**no**");
+        else if (shipped_ran)
+            md += " — | | |";
+        md += "\n";
         if (!row.agrees && !row.entry.note.empty()) noted.push_back(&row);
     }
-    md += fmt::format("\n{} of {} entries with dt from 1e-2 to 1e-5 agree within 1 %.\n\n", agree_main, total_main);
+    md += fmt::format("\n{} of {} entries with dt from 1e-2 to 1e-5 agree within 1 %.", agree_main, total_main);
+    if (shipped_total > 0)
+        md += fmt::format(" Kratos as shipped: {} of {} entries with dt from 1e-2 to 1e-5 agree within 1 % (docs/findings.md says "
+                          "where and why not).",
+                          shipped_agree, shipped_total);
+    md += "\n\n";
     std::set<std::string> explained;
     for (const auto* row : noted) {
         const std::string key = row->entry.scheme + fmt::format("{:g}", row->entry.dt);

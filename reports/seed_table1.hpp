@@ -17,6 +17,7 @@ struct Table1Entry {
     char component;         // 'x' or 'y'
     double published;       // as printed, 3 significant digits
     std::string note;       // why a disagreeing entry disagrees
+    std::string shipped;    // the client running the seed's own code, Kratos DEM, as shipped (examples/clients/kratos)
 };
 
 const std::vector<Table1Entry>& seed_table1();
@@ -30,10 +31,13 @@ struct Table1Comparison {
     double computed;
     double relative_difference;  // computed / published - 1
     bool agrees;                 // |relative_difference| <= table1_tolerance
+    std::optional<double> shipped;  // the same entry from Kratos's binary, where its client ran
+    bool shipped_agrees = false;
 };
 
-// The entries whose runs are in `results` (scene cylinder_free with its published
-// parameters and duration, 0.5 s); empty when there are none.
+// The entries whose built-in runs are in `results` (scene cylinder_free with its published
+// parameters and duration, 0.5 s), each with Kratos's value where its client ran too; empty
+// when there are none.
 std::vector<Table1Comparison> compare_table1(const std::vector<RunResult>& results);
 
 }  // namespace rotbench
