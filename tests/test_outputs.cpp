@@ -173,6 +173,20 @@ TEST_CASE("outputs: two outputs of one command on one file are refused before an
     fs::remove_all(dir);
 }
 
+TEST_CASE("outputs: gate --out D --junit D/junit.xml, CI's layout, writes every file once and exits by its verdict") {
+    const fs::path dir = fresh_dir("outputs_junit_in_out");
+    const std::string gate = (fs::path(ROTBENCH_SOURCE_DIR) / "gates" / "default.toml").string();
+    const std::vector<std::string> args = {"gate", gate, "--schemes", "richardson", "--out", dir.string(), "--junit", (dir / "junit.xml").string()};
+    const Cli first = cli(args);
+    CHECK(first.status == 0);
+    CHECK(first.err.find("summary.json") == std::string::npos);
+    for (const char* file : {"gate.csv", "summary.json", "junit.xml", "runs.jsonl", "results.csv", "runs.csv"})
+        CHECK(fs::exists(dir / file));
+    const Cli again = cli(with(args, {"--overwrite"}));  // the folder's own summary.json, replaced with it
+    CHECK(again.status == 0);
+    fs::remove_all(dir);
+}
+
 TEST_CASE("outputs: a signal outside a sweep ends the command by that signal, stops its gnuplot and leaves no temporary file") {
     const fs::path dir = fresh_dir("outputs_signal");
     REQUIRE(cli(with(one_run, {"--out", (dir / "o").string()})).status == 0);

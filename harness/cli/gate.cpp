@@ -61,16 +61,20 @@ public:
         if (slice.shard && out_.empty()) throw InputError("--shard needs --out: a slice's runs are only worth their files");
         if (slice.shard && !results_.empty()) throw InputError("--results judges runs already made: no --shard with it");
         // Every output is checked before the first run: a file in the way fails now, not after the work.
-        // (--junit's summary.json may be --out's: the same summary, written twice.)
+        // --junit's summary.json may be --out's (CI's `--out D --junit D/junit.xml`): the output folder
+        // then owns it and writes it once.
         const fs::path junit_json = junit_.empty() ? fs::path() : fs::path(junit_).parent_path() / "summary.json";
-        const fs::path out_json = out_.empty() ? fs::path() : fs::path(out_) / "summary.json";
+        const fs::path out_path = how.resuming ? *how.resuming : fs::path(out_);
+        const fs::path out_json = out_path.empty() ? fs::path() : out_path / "summary.json";
+        const bool junit_json_in_out = !junit_json.empty() && !out_json.empty() &&
+                                       fs::weakly_canonical(junit_json) == fs::weakly_canonical(out_json);
         check_distinct_outputs({{"--junit", junit_}, {"--junit (summary.json beside it)", junit_json}, {"--summary", summary_}});
         check_distinct_outputs({{"--junit", junit_}, {"--summary", summary_}, {"--out (its summary.json)", out_json}});
         const std::string step = step_summary();
         if (!junit_.empty()) {
             check_output_file(junit_, "--junit", overwrite_, junit_signature);
-            check_output_file(fs::path(junit_).parent_path() / "summary.json", "--junit (summary.json beside it)", overwrite_,
-                              summary_json_signature);
+            if (!junit_json_in_out)
+                check_output_file(junit_json, "--junit (summary.json beside it)", overwrite_, summary_json_signature);
         }
         if (!summary_.empty()) check_output_file(summary_, "--summary", overwrite_, markdown_signature);
         std::optional<OutputDir> dir;
@@ -114,7 +118,7 @@ public:
         const std::string json = gate_summary_json(result, file_, provenance());
         if (!junit_.empty()) {
             write_output_file(junit_, gate_junit(result, file_));
-            write_output_file(fs::path(junit_).parent_path() / "summary.json", json);
+            if (!junit_json_in_out) write_output_file(junit_json, json);
         }
         const std::string markdown = gate_markdown(result, "gate", file_);
         if (!summary_.empty()) write_output_file(summary_, markdown);
