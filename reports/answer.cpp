@@ -30,7 +30,10 @@ std::string dt_cell(const LargestDt& a) {
     if (a.how == "extrapolated") return fmt::format("{:.3g} (extrap.)", a.dt);
     return fmt::format("{:.3g}", a.dt);
 }
-std::string cpu_cell(const LargestDt& a) { return std::isfinite(a.cpu_seconds) ? fmt::format("{:.2e}", a.cpu_seconds) : "—"; }
+std::string cpu_cell(const LargestDt& a) {
+    if (std::isfinite(a.cpu_seconds)) return fmt::format("{:.2e}", a.cpu_seconds);
+    return a.how == "never" ? "—" : "not timed";
+}
 bool below(const LargestDt& a) { return a.how != "never" && a.dt < a.dt_limit; }
 std::string limit_cell(const LargestDt& a) {
     if (a.how == "never") return "—";
@@ -61,8 +64,8 @@ std::string answer_section(const ResultSet& set, const std::vector<LargestDt>& a
         "\"extrap.\": no measured step does, and the finest one is extended with the observed order; \"exact\": round-off "
         "only at every step, so only stability limits dt; \"never\": no step meets it and the error does not converge. "
         "*Stable*: whether that dt lies below the measured stability limit (section [Stability](#stability-limits); "
-        "\"unknown\" without a stability study). Ranked by the geometric mean of the CPU times on {0}; all scenes and "
-        "`answer.csv` follow.\n\n",
+        "\"unknown\" without a stability study). Ranked by the geometric mean of the CPU times on {0}, schemes \"not timed\" "
+        "(clients: their program's cost is their own) after those timed; all scenes and `answer.csv` follow.\n\n",
         fmt::format("`{}`", fmt::join(scenes, "` and `")), metric::omega_err_max, metric::omega_ref_max);
     for (const double tol : tolerances) {
         struct Row {

@@ -60,6 +60,7 @@ std::string code_list(const std::vector<std::string>& ids, const std::vector<Sch
         const auto v = std::find_if(verdicts.begin(), verdicts.end(), [&](const SchemeVerdict& x) { return x.scheme == ids[i]; });
         out += (i == 0 ? "" : i + 1 == ids.size() ? " and " : ", ") + fmt::format("`{}`", ids[i]);
         if (v != verdicts.end() && std::isfinite(v->ns_per_step)) out += fmt::format(" ({:.0f} ns/step)", v->ns_per_step);
+        else out += " (not timed)";
     }
     return out;
 }
@@ -104,10 +105,15 @@ std::string recommendation_section(const SchemeChoice& rec, const std::vector<Sc
         md += fmt::format("- **Use** {}: second order with and without torque, the angular momentum kept and the energy bounded "
                           "(or kept) over {:g} times a scene's duration; cheapest first (the verdicts below say why).\n",
                           code_list(rec.use, verdicts), energy_horizon);
-    if (!rec.short_runs.empty())
-        md += fmt::format("- **For short runs** {}: second order and the momentum kept, but their energy drifts secularly; cheap, "
-                          "and accurate until the drift matters.\n",
-                          code_list(rec.short_runs, verdicts));
+    if (!rec.short_runs.empty()) {
+        const bool all_timed = std::all_of(rec.short_runs.begin(), rec.short_runs.end(), [&](const std::string& id) {
+            const auto v = std::find_if(verdicts.begin(), verdicts.end(), [&](const SchemeVerdict& x) { return x.scheme == id; });
+            return v != verdicts.end() && std::isfinite(v->ns_per_step);
+        });
+        md += fmt::format("- **For short runs** {}: second order and the momentum kept, but their energy drifts secularly; {}"
+                          "accurate until the drift matters.\n",
+                          code_list(rec.short_runs, verdicts), all_timed ? "cheap, and " : "");
+    }
     if (!rec.avoid.empty()) {
         md += "- **Avoid**";
         for (std::size_t i = 0; i < rec.avoid.size(); ++i)

@@ -10,7 +10,8 @@ namespace {
 
 const RunResult* coarsest(const std::vector<const RunResult*>& sorted) { return sorted.front(); }
 
-// A run's CPU time scaled to a run of the same duration at `dt`.
+// A run's CPU time scaled to a run of the same duration at `dt`; NaN for a run with no CPU time
+// (a client's: its program's cost is its own).
 double seconds_at(const RunResult& r, double dt) { return r.value(metric::ns_per_step) * 1e-9 * (r.value(metric::steps) * r.spec.dt) / dt; }
 
 }  // namespace
@@ -19,9 +20,9 @@ double relative_omega_error(const RunResult& r) { return r.value(metric::omega_e
 
 LargestDt largest_dt(const std::vector<const RunResult*>& runs, const OrderRow& order, double tolerance) {
     LargestDt a{order.scene, order.scheme, tolerance, "never", NAN, NAN, NAN, ""};
-    std::vector<const RunResult*> ok;
+    std::vector<const RunResult*> ok;  // the dt is judged by the errors alone, timed or not
     for (const RunResult* r : runs)
-        if (r->failure.empty() && std::isfinite(relative_omega_error(*r)) && std::isfinite(r->value(metric::ns_per_step))) ok.push_back(r);
+        if (r->failure.empty() && std::isfinite(relative_omega_error(*r))) ok.push_back(r);
     if (ok.empty()) return a;
     std::sort(ok.begin(), ok.end(), [](const RunResult* x, const RunResult* y) { return x->spec.dt > y->spec.dt; });
     const auto set = [&](const char* how, const RunResult& r, double dt) {
@@ -51,7 +52,7 @@ std::vector<LargestDt> largest_dts(const ResultSet& set, const std::vector<Order
             std::vector<const RunResult*> runs;
             double omega_ref = 0;
             for (const auto& r : set.runs)
-                if (r.spec.scene == o.scene && r.spec.scheme == o.scheme) {
+                if (r.spec.scene == o.scene && r.spec.scheme == o.scheme && r.spec.kind == RunKind::trajectory) {
                     runs.push_back(&r);
                     if (r.has(metric::omega_ref_max)) omega_ref = std::max(omega_ref, r.value(metric::omega_ref_max));
                 }

@@ -24,7 +24,7 @@ struct LargestDt {
     // "never" (no measured step meets it and there is no order to extrapolate with).
     std::string how;
     double dt = 0;           // s; NaN for "never"
-    double cpu_seconds = 0;  // a whole run at dt: ns_per_step x (t_end / dt), NaN for "never"
+    double cpu_seconds = 0;  // a whole run at dt: ns_per_step x (t_end / dt), NaN for "never" and for runs not timed
     double dt_limit = 0;     // the stability limit compared with, NaN when none is known
     std::string limit_from;  // where dt_limit comes from
 };
