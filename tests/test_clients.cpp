@@ -157,6 +157,14 @@ TEST_CASE("clients: a bad client file is refused in one line naming the file, li
     CHECK_THAT(refused(ok + "claims = \"fincham\"\nscenes2 = 1\n"), Catch::Contains("unknown key 'scenes2'"));
     CHECK_THAT(refused("id = \"c\"\nprogram = [\"true\"]\nscenes = [\"asymmetric_fre\"]\nclaims = \"direct\"\n"),
                Catch::Contains("unknown scene 'asymmetric_fre'"));
+    // A program that cannot be started is refused at load, by its path, not found out as "status 127" per run.
+    CHECK_THAT(refused("id = \"c\"\nprogram = [\"no_such_program_here\"]\nscenes = [\"asymmetric_free\"]\nclaims = \"direct\"\n"),
+               Catch::Contains("c.toml:2:11: program 'no_such_program_here' is not found on PATH"));
+    CHECK_THAT(refused("id = \"c\"\nprogram = [\"{dir}/missing.py\"]\nscenes = [\"asymmetric_free\"]\nclaims = \"direct\"\n"),
+               Catch::Contains("program '" + (fs::absolute(dir) / "missing.py").lexically_normal().string() + "' cannot be executed: no such file"));
+    write(dir / "data.txt", "not a program\n");
+    CHECK_THAT(refused("id = \"c\"\nprogram = [\"{dir}/data.txt\"]\nscenes = [\"asymmetric_free\"]\nclaims = \"direct\"\n"),
+               Catch::Contains("data.txt' cannot be executed: not an executable file"));
     // An id is part of file names: a long one would fail the outputs once the runs are made.
     const std::string long_id(max_id_length + 1, 'c');
     CHECK_THAT(refused("id = \"" + long_id + "\"\nprogram = [\"true\"]\nscenes = [\"asymmetric_free\"]\nclaims = \"direct\"\n"),

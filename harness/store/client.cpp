@@ -12,7 +12,9 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
+#include <cstdlib>
 #include <stdexcept>
+#include <unistd.h>
 
 namespace rotbench {
 namespace {
@@ -94,6 +96,28 @@ std::string why_not_taken(const std::string& scheme, const std::string& scene) {
     return "client " + scheme + " does not take scene " + scene + " (its client file lists " + join(c->scenes, ", ") + ")";
 }
 
+// The program as the run will start it, checked now: a path with a slash is taken from the working
+// directory (a run starts in its scratch folder), a bare name is looked up on PATH; one that
+// cannot be executed refuses the client file, naming the path, before any run.
+static std::string executable(const std::string& path, const toml::node& where, const std::string& program) {
+    if (program.find('/') != std::string::npos) {
+        const std::string absolute = std::filesystem::absolute(program).lexically_normal().string();
+        if (::access(absolute.c_str(), X_OK) != 0 || std::filesystem::is_directory(absolute))
+            toml_error(path, where, "program '" + absolute + "' cannot be executed: " +
+                                        (std::filesystem::exists(absolute) ? "not an executable file" : "no such file"));
+        return absolute;
+    }
+    const char* search = std::getenv("PATH");
+    std::string dirs = search ? search : "";
+    for (std::size_t from = 0; from <= dirs.size();) {
+        const std::size_t colon = std::min(dirs.find(':', from), dirs.size());
+        const std::filesystem::path candidate = std::filesystem::path(dirs.substr(from, colon - from)) / program;
+        if (colon > from && ::access(candidate.c_str(), X_OK) == 0 && !std::filesystem::is_directory(candidate)) return program;
+        from = colon + 1;
+    }
+    toml_error(path, where, "program '" + program + "' is not found on PATH");
+}
+
 std::string load_client(const std::string& path) {
     const std::string bytes = read_input_file(path, "--client");
     const std::string absolute = std::filesystem::absolute(path).lexically_normal().string(), hash = Fnv1a().feed(bytes).hex();
@@ -120,6 +144,7 @@ std::string load_client(const std::string& path) {
         client.program.push_back(argument);
     }
     if (client.program.empty() || client.program.front().empty()) toml_error(path, *program_node, "'program' names no program");
+    client.program.front() = executable(path, *program_node, client.program.front());
     client.scenes = ids(path, "scenes", *scenes_node, SceneRegistry::instance(), "scene");
     SchemeClaims claims = claims_of(path, *claims_node);
     std::string summary = "client (" + path + ")", notes;
