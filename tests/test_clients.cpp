@@ -202,6 +202,30 @@ TEST_CASE("clients: the example client, the midpoint rule in Python, holds its c
     CHECK_THAT(r.out, Catch::Contains("WARNING client python_rk2 does not take scene sphere_pair"));
 }
 
+TEST_CASE("clients: a gate's same_map_as passes the counterpart's own map and fails another second-order one") {
+    const fs::path dir = fresh_dir("client_same_map");
+    const fs::path same = client_file(dir, "client_same", "richardson", "", "claims = \"richardson\"\ncounterpart = \"richardson\"\n");
+    // no_squish is second order too: a change that keeps the order but leaves richardson's map.
+    const fs::path other = client_file(dir, "client_other", "no_squish", "", "claims = \"richardson\"\ncounterpart = \"richardson\"\n");
+    write(dir / "gate.toml",
+          "[[check]]\nname = \"same map as richardson\"\nscene = \"asymmetric_free\"\nschemes = [\"client_same\", \"client_other\"]\n"
+          "same_map_as = \"richardson\"\ndt = [0.05, 0.025]\n");
+    const Cli r = cli({"--client", same.string(), "--client", other.string(), "gate", (dir / "gate.toml").string()});
+    INFO(r.out << r.err);
+    CHECK(r.status == 1);
+    CHECK_THAT(r.out, Catch::Contains("PASS asymmetric_free/client_same: client_same: same map as richardson on asymmetric_free: largest "
+                                      "difference from richardson"));
+    CHECK_THAT(r.out, Catch::Contains("for the angular velocity): the same map"));
+    CHECK_THAT(r.out, Catch::Contains("FAIL asymmetric_free/client_other"));
+    CHECK_THAT(r.out, Catch::Contains("another map"));
+    // Only a client measured against that counterpart can be judged so.
+    write(dir / "bad.toml", "[[check]]\nscene = \"asymmetric_free\"\nschemes = [\"no_squish\"]\nsame_map_as = \"richardson\"\ndt = [0.05]\n");
+    const Cli bad = cli({"gate", (dir / "bad.toml").string()});
+    CHECK(bad.status == 2);
+    CHECK_THAT(bad.err, Catch::Contains("same_map_as = 'richardson' judges clients whose counterpart it is; 'no_squish' is not a client"));
+    fs::remove_all(dir);
+}
+
 TEST_CASE("clients: the report says whether a client is its counterpart's map, to round-off, or another and why") {
     const fs::path dir = fresh_dir("client_report");
     const fs::path same = client_file(dir, "client_same", "no_squish", "", "claims = \"no_squish\"\ncounterpart = \"no_squish\"\n");

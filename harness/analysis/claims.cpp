@@ -188,6 +188,20 @@ Judgement judge_momentum(const RunRefs& runs) {
     return j;
 }
 
+Judgement judge_same_map(const RunRefs& runs, const std::string& counterpart) {
+    auto [j, run] = within_round_off(runs, {metric::counterpart_omega_diff_max, metric::counterpart_angle_diff_max});
+    if (run && std::isnan(j.measured)) {
+        j.passed = false;
+        j.message = fmt::format("no difference from {} measured at dt = {} (the client file names no counterpart?)", counterpart, g(run->spec.dt));
+    } else if (run) {
+        j.message = fmt::format("largest difference from {} {} at dt = {} against the round-off bound {} (N = {} steps x 10 eps, "
+                                "times |w_ref| for the angular velocity): {}",
+                                counterpart, g(j.measured), g(run->spec.dt), g(j.bound), run->value(metric::steps),
+                                j.passed ? "the same map" : "another map");
+    }
+    return j;
+}
+
 Judgement judge_sanity_momentum(const RunResult& run) {
     Judgement j;
     j.bound = sanity_max_momentum_drift;

@@ -57,6 +57,10 @@ Judgement judge_min_order(const RunRefs& ladder, const std::string& metric, doub
 Judgement judge_exact(const RunRefs& runs);
 // The angular momentum kept to round-off in every run.
 Judgement judge_momentum(const RunRefs& runs);
+// A client's runs differ from its counterpart's (`counterpart`) by round-off only at every step
+// and every dt: the same map (counterpart_omega_diff_max and counterpart_angle_diff_max within
+// their round-off bounds, round_off.hpp).
+Judgement judge_same_map(const RunRefs& runs, const std::string& counterpart);
 // The angular momentum within sanity_max_momentum_drift.
 Judgement judge_sanity_momentum(const RunResult& run);
 // From a horizon run (RunKind::horizon): the largest energy error over energy_horizon x T

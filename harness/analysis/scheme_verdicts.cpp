@@ -163,11 +163,9 @@ std::vector<CounterpartVerdict> counterpart_verdicts(const ResultSet& set) {
     for (const auto& [client, scenes] : found)
         for (const auto& [scene, by_dt] : scenes) {
             CounterpartVerdict v{client, set.scheme(client)->counterpart, scene, by_dt.rbegin()->second, by_dt.begin()->second};
-            v.same_map = std::all_of(by_dt.begin(), by_dt.end(), [](const auto& entry) {
-                const RunResult& r = *entry.second;
-                return r.value(metric::counterpart_omega_diff_max) <= round_off_bound(r, metric::counterpart_omega_diff_max) &&
-                       r.value(metric::counterpart_angle_diff_max) <= round_off_bound(r, metric::counterpart_angle_diff_max);
-            });
+            RunRefs runs;
+            for (const auto& entry : by_dt) runs.push_back(entry.second);
+            v.same_map = judge_same_map(runs, v.counterpart).passed;
             if (!v.same_map) {
                 v.note = set.scheme(client)->counterpart_note;
                 const double c = CounterpartVerdict::relative(*v.coarse), f = CounterpartVerdict::relative(*v.fine);

@@ -2,7 +2,9 @@
 
 #include "harness/core/fnv1a.hpp"
 #include "harness/core/metrics.hpp"
+#include "harness/store/client.hpp"
 #include "harness/store/output_files.hpp"
+#include "harness/store/plugin.hpp"
 #include "harness/store/toml_input.hpp"
 #include "harness/scenes/scene.hpp"
 #include "harness/scenes/stability_probe.hpp"
@@ -17,7 +19,7 @@ namespace rotbench {
 namespace {
 
 const std::vector<std::string> criteria = {"min_order",          "max_error",     "max_energy_drift",
-                                           "max_momentum_drift", "min_stability", "max_cost_ratio"};
+                                           "max_momentum_drift", "min_stability", "max_cost_ratio", "same_map_as"};
 
 std::string metric_of(const std::string& criterion, const std::string& metric) {
     if (criterion == "max_energy_drift") return metric::energy_drift_max;
@@ -83,6 +85,12 @@ GateCheck read_check(const std::string& path, const toml::table& t, std::size_t 
             if (!v.as_table()) toml_error(path, v, "'params' must be a table of scene parameters");
             if (c.scene.empty()) toml_error(path, v, "'params' needs a 'scene'");
             c.params = scene_overrides(path, c.scene, *v.as_table());
+        } else if (key == "same_map_as") {
+            if (!c.criterion.empty()) toml_error(path, v, "a check has one criterion; this one has '" + c.criterion + "' and '" + key + "'");
+            c.criterion = key;
+            c.same_map_as = text(path, key, v);
+            if (!SchemeRegistry::instance().contains(c.same_map_as) || client_of(c.same_map_as) || plugin_of(c.same_map_as))
+                toml_error(path, v, "same_map_as = '" + c.same_map_as + "': not a built-in scheme");
         } else if (std::find(criteria.begin(), criteria.end(), key) != criteria.end()) {
             if (!c.criterion.empty()) toml_error(path, v, "a check has one criterion; this one has '" + c.criterion + "' and '" + key + "'");
             c.criterion = key;
@@ -111,7 +119,14 @@ GateCheck read_check(const std::string& path, const toml::table& t, std::size_t 
         for (const auto& id : ids(path, "except", *except_node, SchemeRegistry::instance(), "scheme"))
             std::erase(c.schemes, id);
     }
-    const bool ladder = c.criterion == "min_order";
+    if (c.criterion == "same_map_as")  // each scheme a client measured against that counterpart
+        for (const auto& id : c.schemes) {
+            const LoadedClient* client = client_of(id);
+            if (!client || client->counterpart != c.same_map_as)
+                toml_error(path, t, "same_map_as = '" + c.same_map_as + "' judges clients whose counterpart it is; '" + id + "' is " +
+                                        (client ? "a client with counterpart '" + client->counterpart + "'" : "not a client"));
+        }
+    const bool ladder = c.criterion == "min_order" || c.criterion == "same_map_as";
     if (c.criterion == "min_stability") {
         if (!c.dts.empty()) toml_error(path, t, "min_stability searches for the limit itself: remove 'dt'");
         const std::vector<std::string> valid = stability_scene_ids();
@@ -120,7 +135,7 @@ GateCheck read_check(const std::string& path, const toml::table& t, std::size_t 
     } else if (!ladder && c.dts.size() != 1) {
         toml_error(path, t, "'" + c.criterion + "' needs exactly one 'dt'");
     }
-    if (ladder && !c.dts.empty() && c.dts.size() < 3) toml_error(path, t, "min_order needs at least 3 time steps in 'dt'");
+    if (c.criterion == "min_order" && !c.dts.empty() && c.dts.size() < 3) toml_error(path, t, "min_order needs at least 3 time steps in 'dt'");
     if (c.name.empty()) c.name = c.criterion;
     make_scene(c.scene, c.params);  // parameters valid together (e.g. moments), named on error
     return c;

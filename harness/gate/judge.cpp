@@ -43,6 +43,10 @@ void judge_check(Verdict& v, const GateCheck& c, const Runs& runs) {
         take(v, judge_min_order(runs, c.metric, c.bound, c.round_off), name);
         return;
     }
+    if (c.criterion == "same_map_as") {
+        take(v, judge_same_map(runs, c.same_map_as), name);
+        return;
+    }
     const RunResult& r = *runs.front();
     if (!r.failure.empty()) {
         v.message = name + ": the run failed: " + r.failure;

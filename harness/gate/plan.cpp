@@ -113,7 +113,7 @@ public:
                     continue;
                 }
                 std::vector<std::size_t> runs;
-                if (c.criterion == "min_order") {
+                if (c.criterion == "min_order" || c.criterion == "same_map_as") {
                     runs = ladder(c.scene, scheme, c.dts.empty() ? make_scene(c.scene, c.params)->default_dts() : c.dts, c.t_end, c.params);
                 } else if (c.criterion == "min_stability") {
                     runs = {run({c.scene, scheme, 0.0, c.t_end, c.params, RunKind::stability, false})};
