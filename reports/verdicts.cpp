@@ -85,14 +85,18 @@ std::string verdict_section(const ResultSet& set, const std::vector<SchemeVerdic
         "limit over Peng et al.'s prediction on the contact pairs, every damping ratio (below 1: Peng's dt is unsafe). "
         "*ns / step*: **the cost figure of this report**, the median `ns_per_step` of the scheme's runs on `{2}` (one "
         "body; the per-thread CPU time of a run without its metrics over its steps); every CPU time in the report is "
-        "this kind of figure, on its own scene.\n\n"
+        "this kind of figure, on its own scene. A client's figure is its program's wall time per step, \"(client, wall)\": the "
+        "horizon run (8 T) less the trajectory run (T) at the coarsest dt, over the steps added, so its start-up drops out; it "
+        "is not a CPU time, and the rankings leave it out.\n\n"
         "| scheme | order, free | order, torque | momentum | energy | stability / Peng | ns / step |\n"
         "|---|---|---|---|---|---|---:|\n",
         energy_horizon, energy_growth_bound, cost_on, metric::omega_err_max);
     for (const auto& v : verdicts)
         md += fmt::format("| `{}`{} | {} | {} | {} | {} | {} | {} |\n", v.scheme, v.control ? " (control)" : "", order_cell(v.free),
                           order_cell(v.torque), momentum_cell(v), energy_cell(v), stability_cell(v),
-                          std::isfinite(v.ns_per_step) ? fmt::format("{:.0f}", v.ns_per_step) : "—");
+                          std::isfinite(v.ns_per_step)             ? fmt::format("{:.0f}", v.ns_per_step)
+                          : std::isfinite(v.client_wall_ns_per_step) ? fmt::format("{:.3g} (client, wall)", v.client_wall_ns_per_step)
+                                                                     : "—");
     if (!has_stability)
         md += "\nNo stability study in this directory: `rotbench stability --out DIR` writes one beside the runs, and "
               "`rotbench report DIR` then includes it.\n";

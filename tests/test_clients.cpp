@@ -202,21 +202,46 @@ TEST_CASE("clients: the example client, the midpoint rule in Python, holds its c
     CHECK_THAT(r.out, Catch::Contains("WARNING client python_rk2 does not take scene sphere_pair"));
 }
 
+TEST_CASE("clients: each client run records its program's CPU and wall time, a built-in run none") {
+    const fs::path dir = fresh_dir("client_time");
+    const fs::path file = client_file(dir, "client_timed", "no_squish");
+    const Cli r = cli({"--client", file.string(), "run", "--scenes", "asymmetric_free", "--schemes", "no_squish,client_timed", "--dt",
+                       "0.05", "--quiet", "--out", (dir / "out").string()});
+    INFO(r.err);
+    REQUIRE(r.status == 0);
+    for (const RunResult& run : read_results((dir / "out").string())) {
+        INFO(run.spec.scheme << " " << kind_name(run.spec.kind));
+        if (run.spec.scheme == "client_timed") {
+            // The program is python3 running `rotbench trajectory`: at least the interpreter's start.
+            CHECK(run.value(metric::client_wall_seconds) > 0.0);
+            CHECK(run.value(metric::client_cpu_seconds) > 0.0);
+        } else {
+            CHECK_FALSE(run.has(metric::client_wall_seconds));
+        }
+    }
+    // The verdicts' cost column: the client's own figure, marked, beside the built-in's CPU time.
+    const std::string md = read(dir / "out" / "report.md");
+    const auto row = md.find("| `client_timed` |");
+    REQUIRE(row != std::string::npos);
+    CHECK(md.substr(row, md.find('\n', row) - row).find("(client, wall) |") != std::string::npos);
+    fs::remove_all(dir);
+}
+
 TEST_CASE("clients: a gate's same_map_as passes the counterpart's own map and fails another second-order one") {
-    const fs::path dir = fresh_dir("client_same_map");
-    const fs::path same = client_file(dir, "client_same", "richardson", "", "claims = \"richardson\"\ncounterpart = \"richardson\"\n");
+    const fs::path dir = fresh_dir("client_map_same_map");
+    const fs::path same = client_file(dir, "client_map_same", "richardson", "", "claims = \"richardson\"\ncounterpart = \"richardson\"\n");
     // no_squish is second order too: a change that keeps the order but leaves richardson's map.
-    const fs::path other = client_file(dir, "client_other", "no_squish", "", "claims = \"richardson\"\ncounterpart = \"richardson\"\n");
+    const fs::path other = client_file(dir, "client_map_other", "no_squish", "", "claims = \"richardson\"\ncounterpart = \"richardson\"\n");
     write(dir / "gate.toml",
-          "[[check]]\nname = \"same map as richardson\"\nscene = \"asymmetric_free\"\nschemes = [\"client_same\", \"client_other\"]\n"
+          "[[check]]\nname = \"same map as richardson\"\nscene = \"asymmetric_free\"\nschemes = [\"client_map_same\", \"client_map_other\"]\n"
           "same_map_as = \"richardson\"\ndt = [0.05, 0.025]\n");
     const Cli r = cli({"--client", same.string(), "--client", other.string(), "gate", (dir / "gate.toml").string()});
     INFO(r.out << r.err);
     CHECK(r.status == 1);
-    CHECK_THAT(r.out, Catch::Contains("PASS asymmetric_free/client_same: client_same: same map as richardson on asymmetric_free: largest "
+    CHECK_THAT(r.out, Catch::Contains("PASS asymmetric_free/client_map_same: client_map_same: same map as richardson on asymmetric_free: largest "
                                       "difference from richardson"));
     CHECK_THAT(r.out, Catch::Contains("for the angular velocity): the same map"));
-    CHECK_THAT(r.out, Catch::Contains("FAIL asymmetric_free/client_other"));
+    CHECK_THAT(r.out, Catch::Contains("FAIL asymmetric_free/client_map_other"));
     CHECK_THAT(r.out, Catch::Contains("another map"));
     // Only a client measured against that counterpart can be judged so.
     write(dir / "bad.toml", "[[check]]\nscene = \"asymmetric_free\"\nschemes = [\"no_squish\"]\nsame_map_as = \"richardson\"\ndt = [0.05]\n");

@@ -125,6 +125,25 @@ std::string cost_scene(const ResultSet& set) {
     return set.runs.empty() ? "" : set.runs.front().spec.scene;
 }
 
+// A client's wall time per step on `scene`, start-up removed: the horizon run less the trajectory
+// run at the same dt, over the steps the longer one adds. NaN without both, or for a built-in.
+static double client_step_cost(const ResultSet& set, const std::string& scheme, const std::string& scene) {
+    const RunResult *trajectory = nullptr, *horizon = nullptr;
+    for (const auto& r : set.horizons)
+        if (r.spec.scheme == scheme && r.spec.scene == scene && r.failure.empty() && r.has(metric::client_wall_seconds)) horizon = &r;
+    if (!horizon) return NAN;
+    for (const auto& r : set.runs)
+        if (r.spec.scheme == scheme && r.spec.scene == scene && r.spec.kind == RunKind::trajectory && r.spec.dt == horizon->spec.dt &&
+            r.failure.empty() && r.has(metric::client_wall_seconds))
+            trajectory = &r;
+    if (!trajectory) return NAN;
+    // The horizon run records no step count: it made the steps of energy_horizon x T.
+    const double added = static_cast<double>(step_count(energy_horizon * horizon->spec.t_end, horizon->spec.dt)) -
+                         trajectory->value(metric::steps);
+    const double seconds = horizon->value(metric::client_wall_seconds) - trajectory->value(metric::client_wall_seconds);
+    return added > 0 ? 1e9 * seconds / added : NAN;
+}
+
 std::vector<SchemeVerdict> scheme_verdicts(const ResultSet& set, const std::vector<OrderRow>& orders,
                                            const std::vector<StabilityRow>& stability) {
     const std::string cost_on = cost_scene(set);
@@ -145,6 +164,7 @@ std::vector<SchemeVerdict> scheme_verdicts(const ResultSet& set, const std::vect
             if (run.spec.scheme == v.scheme && run.spec.scene == cost_on && std::isfinite(run.value(metric::ns_per_step)))
                 ns.push_back(run.value(metric::ns_per_step));
         v.ns_per_step = median(ns);
+        v.client_wall_ns_per_step = client_step_cost(set, v.scheme, cost_on);
         out.push_back(std::move(v));
     }
     return out;

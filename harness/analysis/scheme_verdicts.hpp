@@ -46,6 +46,10 @@ struct SchemeVerdict {
     double stability_lo = NAN, stability_hi = NAN;      // measured limit / Peng's over the contact pairs
     std::string stability_weak, stability_failed;       // "scene ζ = z" lists
     double ns_per_step = NAN;                            // the report's cost figure, on cost_scene()
+    // A client's own cost on cost_scene(), never ranked with ns_per_step: its program's wall time per
+    // step with the start-up removed, from two lengths of one run (the horizon run, 8 T at the
+    // coarsest dt, less the trajectory run of T at that dt).
+    double client_wall_ns_per_step = NAN;
 };
 
 // The scene whose ns_per_step is the report's cost figure: asymmetric_free, or else the first

@@ -159,21 +159,27 @@ RunResult run_client(const RunSpec& requested, const RunOptions& options, const 
     const double seconds = limits.seconds > 0 ? limits.seconds : steps_timeout(body_steps);
     const WorkerOutput out = run_program(args, scratch.path.string(), seconds, limits.megabytes ? limits.megabytes : isolation_memory(1), "program");
     if (out.interrupted) return RunResult{failed.spec, {}, {}, true};
-    if (!out.failure.empty()) return fail(out.failure);
+    // The program's own cost, whatever became of its output: a slow rung is found by it.
+    const auto timed = [&out](RunResult r) {
+        r.metrics.emplace_back(metric::client_cpu_seconds, out.cpu_seconds);
+        r.metrics.emplace_back(metric::client_wall_seconds, out.wall_seconds);
+        return r;
+    };
+    if (!out.failure.empty()) return timed(fail(out.failure));
     if (granular) {
         RunResult result = replay_granular_samples(requested, *granular, scratch.path / output, steps);
         if (!result.failure.empty()) result.failure += out.last_error_line;
         result.spec.t_end = t_end;
-        return result;
+        return timed(std::move(result));
     }
     std::vector<Row> rows;
     if (const std::string why = read_rows(scratch.path / "trajectory.csv", steps, requested.dt, rows); !why.empty())
-        return fail(why + out.last_error_line);
+        return timed(fail(why + out.last_error_line));
     const SchemeFactory replay = [&rows] { return std::make_unique<Replay>(rows); };
-    if (requested.kind == RunKind::horizon) return run_horizon(requested, replay);
+    if (requested.kind == RunKind::horizon) return timed(run_horizon(requested, replay));
     RunResult result = run_trajectory(requested, {.measure_time = false, .series_samples = options.series_samples}, replay);
     if (!client.counterpart.empty() && result.failure.empty()) add_counterpart_difference(result, *scene, client.counterpart, rows);
-    return result;
+    return timed(std::move(result));
 }
 
 }  // namespace rotbench

@@ -198,8 +198,12 @@ WorkerOutput run_program(std::vector<std::string> args, const std::string& direc
     release_child_group(pid);  // killed: a signal now need not
     for (auto& f : fds)
         if (f.fd >= 0) ::close(f.fd);
-    while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+    rusage usage{};
+    while (::wait4(pid, &status, 0, &usage) < 0 && errno == EINTR) {
     }
+    result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    result.cpu_seconds = static_cast<double>(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
+                         1e-6 * static_cast<double>(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
     if (const auto end = errors.find_last_not_of("\n"); end != std::string::npos) {
         const auto line_break = errors.rfind('\n', end);
         const std::size_t begin = line_break == std::string::npos ? 0 : line_break + 1;

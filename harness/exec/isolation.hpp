@@ -8,6 +8,7 @@
 #include "harness/exec/run.hpp"
 
 #include <cstddef>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -46,6 +47,8 @@ bool memory_limit_enforced();
 struct WorkerOutput {
     std::string text, failure, last_error_line;  // the last line ": ..." of its standard error, if any
     bool interrupted = false;
+    double cpu_seconds = NAN;   // user + system of the process and the children it waited for (wait4)
+    double wall_seconds = NAN;  // from its start to its exit
 };
 WorkerOutput run_worker(const std::vector<std::string>& verb_arguments, double seconds, std::size_t megabytes);
 // The same for any program (a client's): `args` is its argument vector (the first looked up on
