@@ -235,9 +235,16 @@ TEST_CASE("clients: a gate's same_map_as passes the counterpart's own map and fa
     write(dir / "gate.toml",
           "[[check]]\nname = \"same map as richardson\"\nscene = \"asymmetric_free\"\nschemes = [\"client_map_same\", \"client_map_other\"]\n"
           "same_map_as = \"richardson\"\ndt = [0.05, 0.025]\n");
-    const Cli r = cli({"--client", same.string(), "--client", other.string(), "gate", (dir / "gate.toml").string()});
+    const Cli r = cli({"--client", same.string(), "--client", other.string(), "gate", (dir / "gate.toml").string(), "--junit",
+                       (dir / "junit.xml").string()});
     INFO(r.out << r.err);
     CHECK(r.status == 1);
+    // JUnit's time: the client's program's wall time, not 0.
+    const std::string junit = read(dir / "junit.xml");
+    const auto testcase = junit.find("<testcase classname=\"rotbench.gate.client_map_same\"");
+    REQUIRE(testcase != std::string::npos);
+    const auto time = junit.find("time=\"", testcase);
+    CHECK(std::stod(junit.substr(time + 6)) > 0.0);
     CHECK_THAT(r.out, Catch::Contains("PASS asymmetric_free/client_map_same: client_map_same: same map as richardson on asymmetric_free: largest "
                                       "difference from richardson"));
     CHECK_THAT(r.out, Catch::Contains("for the angular velocity): the same map"));

@@ -100,8 +100,10 @@ GateResult judge_gate(const GateFile& file, const GatePlan& plan, std::vector<Ru
         Runs used;
         for (std::size_t i : c.runs) {
             used.push_back(&runs.at(i));
-            const double s = runs[i].value(metric::cpu_seconds_run);
-            if (std::isfinite(s)) v.seconds += s;
+            // A built-in's CPU time; a client's program's wall time (its cost is its own).
+            const double cpu = runs[i].value(metric::cpu_seconds_run), wall = runs[i].value(metric::client_wall_seconds);
+            if (std::isfinite(cpu)) v.seconds += cpu;
+            else if (std::isfinite(wall)) v.seconds += wall;
         }
         if (c.family == "check") {
             judge_check(v, file.checks.at(c.check), used);
