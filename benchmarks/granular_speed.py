@@ -15,9 +15,14 @@ code's figure is over its own number of spheres.
 The table goes to OUT_DIR/granular_speed.csv, where `rotbench report OUT_DIR` shows it in its cost
 section (as benchmarks/cost.py's cost.csv).
 
-Usage: benchmarks/granular_speed.py [--quick] [--t-end S] [--seed N] BUILD_DIR OUT_DIR
+With --kratos PYTHON, Kratos DEM (the seed's code, examples/clients/kratos, Quaternion_Integration
+under Velocity_Verlet) runs the same silo too, after the other two and alone on the machine: a run
+to the opening and a whole run, the discharge being their difference, each its process's CPU time.
+
+Usage: benchmarks/granular_speed.py [--quick] [--t-end S] [--seed N] [--kratos PYTHON] BUILD_DIR OUT_DIR
   --quick   the small silo of examples/small_silo.toml, seconds; the default is
             the silo itself, about 5 CPU-minutes for rotbench and 12 for LIGGGHTS
+  --kratos  the interpreter with Kratos's wheels (the project's venv: .venv/bin/python3)
 """
 import argparse
 import csv
@@ -30,6 +35,7 @@ import threading
 
 here = os.path.dirname(os.path.abspath(__file__))
 adapter = os.path.join(here, "..", "examples", "clients", "liggghts", "liggghts_granular.py")
+kratos_adapter = os.path.join(here, "..", "examples", "clients", "kratos", "kratos_dem.py")
 
 
 def cpu_of(args, cwd, log=None):  # (CPU seconds of the process, its stderr); exits on failure
@@ -46,10 +52,12 @@ def main():
     parser.add_argument("--quick", action="store_true")
     parser.add_argument("--t-end", type=float)
     parser.add_argument("--seed", type=int, default=1)
+    parser.add_argument("--kratos")
     parser.add_argument("build")
     parser.add_argument("out")
     a = parser.parse_args()
     rotbench = os.path.join(os.path.abspath(a.build), "rotbench")
+    kratos = os.path.abspath(a.kratos) if a.kratos else None  # its runs start in their own folders
     settings = ["--set", "silo_discharge.restitution=0.051", "--set", "silo_discharge.seed=%d" % a.seed]
     if a.t_end:
         settings += ["--set", "silo_discharge.t_end=%r" % a.t_end]
@@ -90,13 +98,26 @@ def main():
             whole = cpu_of(trajectory + ["--t-end", repr(spec["t_end"]), "--out", os.path.join(scratch, "whole.csv")], scratch)
             result["rotbench"] = (fill, whole - fill, spec["stones"]["spheres"])
 
+        def run_kratos():
+            cpu = []
+            for name, n in (("kratos_fill", fill_steps), ("kratos_whole", steps)):
+                folder = os.path.join(scratch, name)
+                os.mkdir(folder)
+                piece = dict(spec, steps=n, t_end=n * dt, sample_first=n + 1)
+                json.dump(piece, open(os.path.join(folder, "scene.json"), "w"))
+                cpu.append(cpu_of([kratos, kratos_adapter, "Quaternion_Integration", "Velocity_Verlet", "scene.json", "samples.csv"],
+                                  folder, os.path.join(scratch, name + ".err")))
+            result["kratos"] = (cpu[0], cpu[1] - cpu[0], spec["stones"]["spheres"])
+
         threads = [threading.Thread(target=run_liggghts), threading.Thread(target=run_rotbench)]
         for t in threads:
             t.start()
         for t in threads:
             t.join()
+        if a.kratos:
+            run_kratos()
     rows = []
-    for code in ("rotbench", "liggghts"):
+    for code in ("rotbench", "liggghts") + (("kratos",) if a.kratos else ()):
         if code not in result:
             sys.exit("granular_speed.py: %s did not finish" % code)
         fill, discharge, spheres = result[code]
@@ -117,6 +138,9 @@ def main():
     for phase in ("fill", "discharge"):
         r, l = (float(next(x for x in rows if x["code"] == c and x["phase"] == phase)["cpu_per_sphere_step"]) for c in ("rotbench", "liggghts"))
         print("%-9s rotbench %.3g, LIGGGHTS %.3g CPU-s per sphere-step: rotbench / LIGGGHTS = %.2f" % (phase, r, l, r / l))
+        if a.kratos:
+            k = float(next(x for x in rows if x["code"] == "kratos" and x["phase"] == phase)["cpu_per_sphere_step"])
+            print("%-9s Kratos %.3g CPU-s per sphere-step: rotbench / Kratos = %.3f" % (phase, k, r / k))
 
 
 if __name__ == "__main__":
