@@ -25,7 +25,6 @@ import sys
 
 ROTATIONAL = ("Direct_Integration", "Runge_Kutta", "Quaternion_Integration")
 TRANSLATIONAL = ("Velocity_Verlet", "Symplectic_Euler")
-DECLINE = 3  # docs/clients.md: "this scene is not mine"
 
 rotational, translational, spec_path, out_path = sys.argv[1:5]
 if rotational not in ROTATIONAL or translational not in TRANSLATIONAL:
