@@ -70,6 +70,24 @@ TEST_CASE("compare: an identical rerun passes, a degraded error and a lost order
     CHECK_THAT(ord.message, Catch::Contains("fell from 2.00 [2.00, 2.00] to 1.00 [1.00, 1.00]"));
 }
 
+TEST_CASE("compare: the headline is the claims' metric when it regressed, and a large change is a factor") {
+    const auto base = ladder("no_squish");
+    auto worse = base;
+    for (auto& [name, value] : worse[2].metrics) {
+        if (name == "omega_err_max") value *= 1.5;          // the claimed metric: +50 %
+        if (name == "energy_drift_max") value *= 63786.0;   // another, far more
+    }
+    const Verdict acc = find(compare_runs(base, worse, {}, "base"), "baseline_accuracy");
+    CHECK_FALSE(acc.passed);
+    CHECK_THAT(acc.message, Catch::Contains("omega_err_max at dt = 0.005") && Catch::Contains("+50.0 %"));
+    auto energy_only = base;
+    for (auto& [name, value] : energy_only[2].metrics)
+        if (name == "energy_drift_max") value *= 63786.0;
+    const Verdict factor = find(compare_runs(base, energy_only, {}, "base"), "baseline_accuracy");
+    CHECK_FALSE(factor.passed);
+    CHECK_THAT(factor.message, Catch::Contains("6.38e+04 times as large") && !Catch::Contains("%)"));
+}
+
 TEST_CASE("compare: a run newly unstable fails") {
     const auto base = ladder("direct");
     auto now = base;
