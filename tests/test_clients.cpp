@@ -66,7 +66,7 @@ TEST_CASE("clients: a program that writes garbage, a short or non-finite traject
     const std::vector<std::pair<std::string, std::string>> faults = {
         {"--garbage", "its trajectory is malformed: its trajectory.csv:1: expected the header 't,qw,qx,qy,qz,wx,wy,wz'"},
         {"--short", "its trajectory has 200 rows; 201 are due, one at every step t = k dt, k = 0 ... 200"},
-        {"--nan", "its trajectory.csv:102: a value that is not finite (nan)"},
+        {"--nan", "its trajectory.csv:102:6 (wx): a value that is not finite (nan)"},  // line and column
         {"--crash", "crashed: signal 11 (Segmentation fault) in its program process"},
     };
     for (const auto& [fault, message] : faults) {
@@ -224,6 +224,32 @@ TEST_CASE("clients: each client run records its program's CPU and wall time, a b
     const auto row = md.find("| `client_timed` |");
     REQUIRE(row != std::string::npos);
     CHECK(md.substr(row, md.find('\n', row) - row).find("(client, wall) |") != std::string::npos);
+    fs::remove_all(dir);
+}
+
+TEST_CASE("clients: `client scene` writes the scene.json a run hands over, the user's parameters last") {
+    const Cli r = cli({"client", "scene", "dipole_top", "--dt", "0.01", "--set", "q0=1,0,0,0"});
+    REQUIRE(r.status == 0);
+    const auto j = nlohmann::json::parse(r.out);
+    CHECK(j["format"] == "rotbench-client-scene 1");
+    CHECK(j["steps"] == 1000);  // 10 s at 0.01 s
+    CHECK(j["q0"] == nlohmann::json::array({1.0, 0.0, 0.0, 0.0}));
+    CHECK(r.out.find("\"params\"") > r.out.find("\"columns\""));  // a scanner meets the scene's own q0 first
+    const Cli horizon = cli({"client", "scene", "dipole_top", "--dt", "0.01", "--horizon"});
+    CHECK(nlohmann::json::parse(horizon.out)["steps"] == 8000);  // the horizon run: 8 times the duration
+    const Cli coarsest = cli({"client", "scene", "asymmetric_free"});
+    CHECK(nlohmann::json::parse(coarsest.out)["dt"] == 0.1);  // the scene's coarsest step
+}
+
+TEST_CASE("clients: `client check` runs a program once and names what is wrong with its output, line and column") {
+    const fs::path dir = fresh_dir("client_check");
+    const Cli good = cli({"client", "check", client_file(dir, "client_checked", "no_squish", "", "claims = \"no_squish\"\ncounterpart = \"no_squish\"\n").string()});
+    INFO(good.out << good.err);
+    CHECK(good.status == 0);
+    CHECK_THAT(good.out, Catch::Contains("ok: its output read") && Catch::Contains("against no_squish: largest |dw| 0 rad/s"));
+    const Cli bad = cli({"client", "check", client_file(dir, "client_nan", "no_squish", "--nan").string()});
+    CHECK(bad.status == 1);
+    CHECK_THAT(bad.out, Catch::Contains("FAIL: its trajectory.csv:") && Catch::Contains("(wx): a value that is not finite"));
     fs::remove_all(dir);
 }
 

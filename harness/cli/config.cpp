@@ -62,4 +62,15 @@ void add_setting(SweepSpec& spec, const std::string& text) {
     spec.params[scene].push_back({key, values});
 }
 
+ParamOverrides scene_settings(const std::string& scene, const std::vector<std::string>& settings) {
+    SweepSpec spec;
+    for (const auto& s : settings) add_setting(spec, s.find('.') < s.find('=') ? s : scene + "." + s);
+    ParamOverrides overrides;
+    for (const auto& [scene_id, list] : spec.params) {
+        if (scene_id != scene) throw InputError("--set names scene '" + scene_id + "', but the scene is '" + scene + "'");
+        overrides = list;
+    }
+    return overrides;
+}
+
 }  // namespace rotbench

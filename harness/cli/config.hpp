@@ -15,6 +15,7 @@
 #include "harness/analysis/sweep_plan.hpp"
 
 #include <string>
+#include <vector>
 
 namespace rotbench {
 
@@ -24,5 +25,8 @@ SweepSpec parse_config(std::string_view text, const std::string& name);
 
 // One `--set SCENE.KEY=VALUE` (VALUE: a number or a comma list), added to `spec`.
 void add_setting(SweepSpec& spec, const std::string& text);
+
+// The `--set` settings of a command on one scene (KEY=VALUE, or SCENE.KEY=VALUE naming it).
+ParamOverrides scene_settings(const std::string& scene, const std::vector<std::string>& settings);
 
 }  // namespace rotbench

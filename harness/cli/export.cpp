@@ -32,17 +32,7 @@ struct ExportOptions {
         cmd.add_flag("--overwrite", overwrite, "replace an --out file that an earlier export wrote");
     }
 
-    // --set (KEY=VALUE or SCENE.KEY=VALUE).
-    ParamOverrides overrides() const {
-        SweepSpec spec;
-        for (const auto& s : settings) add_setting(spec, s.find('.') < s.find('=') ? s : scene + "." + s);
-        ParamOverrides overrides;
-        for (const auto& [scene_id, list] : spec.params) {
-            if (scene_id != scene) throw InputError("--set names scene '" + scene_id + "', but --scene is '" + scene + "'");
-            overrides = list;
-        }
-        return overrides;
-    }
+    ParamOverrides overrides() const { return scene_settings(scene, settings); }
     // The scene, with --t-end and --set applied.
     std::unique_ptr<Scene> make() const {
         ParamOverrides with_t_end = overrides();

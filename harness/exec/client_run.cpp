@@ -4,6 +4,7 @@
 #include "harness/exec/run_kinds.hpp"
 #include "harness/store/client.hpp"
 #include "harness/store/csv.hpp"
+#include "harness/store/parse.hpp"
 #include "harness/store/output_files.hpp"
 #include "schemes/quaternion.hpp"
 
@@ -52,7 +53,7 @@ struct Scratch {
     }
 };
 
-nlohmann::json vec(const Vec3& v) { return {v.x(), v.y(), v.z()}; }
+nlohmann::ordered_json vec(const Vec3& v) { return {v.x(), v.y(), v.z()}; }
 
 // The rows of the program's trajectory, or why they are not one.
 std::string read_rows(const fs::path& file, std::int64_t steps, double dt, std::vector<Row>& rows) {
@@ -60,19 +61,22 @@ std::string read_rows(const fs::path& file, std::int64_t steps, double dt, std::
     try {
         const std::string name = "its trajectory.csv";
         const auto records = read_csv(read_input_file(file, name), name, client_trajectory_header);
-        if (static_cast<std::int64_t>(records.size()) != steps + 1)
-            return fmt::format("its trajectory has {} rows; {} are due, one at every step t = k dt, k = 0 ... {}", records.size(), steps + 1, steps);
-        for (std::size_t k = 0; k < records.size(); ++k) {
+        const auto columns = split_commas(client_trajectory_header);
+        // Row by row first, so that a wrong value is named by its line and column (FILE:LINE:COLUMN).
+        for (std::size_t k = 0; k < records.size() && static_cast<std::int64_t>(k) <= steps; ++k) {
             Row row;
             for (std::size_t c = 0; c < row.size(); ++c) {
-                row[c] = csv_number(records[k][c], where(name, records[k]));
-                if (!std::isfinite(row[c])) return fmt::format("{}: a value that is not finite ({})", where(name, records[k]), records[k][c]);
+                const std::string at = fmt::format("{}:{} ({})", where(name, records[k]), c + 1, columns[c]);
+                row[c] = csv_number(records[k][c], at);
+                if (!std::isfinite(row[c])) return fmt::format("{}: a value that is not finite ({})", at, records[k][c]);
             }
             const double t = static_cast<double>(k) * dt;
             if (std::abs(row[0] - t) > 1e-9 * std::max(1.0, std::abs(t)))
                 return fmt::format("{}: t = {} where step {} is at t = {}", where(name, records[k]), records[k][0], k, format_number(t));
             rows.push_back(row);
         }
+        if (static_cast<std::int64_t>(records.size()) != steps + 1)
+            return fmt::format("its trajectory has {} rows; {} are due, one at every step t = k dt, k = 0 ... {}", records.size(), steps + 1, steps);
     } catch (const InputError& e) {
         return std::string("its trajectory is malformed: ") + e.what();
     }
@@ -106,13 +110,12 @@ std::string client_scene_json(const Scene& scene, const RunSpec& spec, double t_
     const Quat q0 = b.orientation[0];
     const Vec3 inertia = b.inertia[0], w_world = b.omega[0], w_body = to_body(q0, w_world);
     const Vec3 l_body = inertia.cwiseProduct(w_body);
-    nlohmann::json torque = {{"law", law->law}};
+    nlohmann::ordered_json torque = {{"law", law->law}};
     for (const auto& [name, value] : law->parameters) torque[name] = vec(value);
-    nlohmann::json params = nlohmann::json::object();
+    nlohmann::ordered_json params = nlohmann::ordered_json::object();
     for (const auto& [key, values] : spec.params) params[key] = values;
-    const nlohmann::json j = {{"format", "rotbench-client-scene 1"},
+    const nlohmann::ordered_json j = {{"format", "rotbench-client-scene 1"},
                               {"scene", spec.scene},
-                              {"params", params},
                               {"mass", b.mass[0]},
                               {"inertia_body", vec(inertia)},
                               {"q0", {q0.w(), q0.x(), q0.y(), q0.z()}},
@@ -124,7 +127,8 @@ std::string client_scene_json(const Scene& scene, const RunSpec& spec, double t_
                               {"dt", spec.dt},
                               {"t_end", t_end},
                               {"steps", steps},
-                              {"columns", client_trajectory_header}};
+                              {"columns", client_trajectory_header},
+                              {"params", params}};  // last: the user's keys (q0 as typed) after the scene's own
     return j.dump(2) + "\n";
 }
 

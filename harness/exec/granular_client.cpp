@@ -17,8 +17,8 @@ namespace {
 // it (far along the floor) is gone from later samples, as a DEM code deletes it.
 constexpr double domain_margin = 1.0;
 
-nlohmann::json vec(const Vec3& v) { return {v.x(), v.y(), v.z()}; }
-nlohmann::json box(const Eigen::AlignedBox3d& b) { return {vec(b.min()), vec(b.max())}; }
+nlohmann::ordered_json vec(const Vec3& v) { return {v.x(), v.y(), v.z()}; }
+nlohmann::ordered_json box(const Eigen::AlignedBox3d& b) { return {vec(b.min()), vec(b.max())}; }
 
 // The box the spheres fill.
 Eigen::AlignedBox3d extent_of(const std::vector<Sphere>& spheres) {
@@ -74,10 +74,10 @@ std::string granular_scene_json(const GranularScene& scene, const RunSpec& spec,
     Eigen::AlignedBox3d extent = packing;
     for (double t : times) scene.place_walls(t), extend_by_walls(extent, system.walls);
     const Eigen::AlignedBox3d domain(extent.min() - Vec3::Constant(domain_margin), extent.max() + Vec3::Constant(domain_margin));
-    nlohmann::json stages = nlohmann::json::array();
+    nlohmann::ordered_json stages = nlohmann::ordered_json::array();
     for (double t : times) {
         scene.place_walls(t);
-        nlohmann::json faces = nlohmann::json::array();
+        nlohmann::ordered_json faces = nlohmann::ordered_json::array();
         for (const WallFace& f : wall_faces(system.walls, domain))
             faces.push_back({{"normal", vec(f.normal)},
                              {"friction", f.friction},
@@ -85,19 +85,18 @@ std::string granular_scene_json(const GranularScene& scene, const RunSpec& spec,
         stages.push_back({{"from", t}, {"faces", faces}});
     }
     scene.place_walls(0.0);
-    nlohmann::json shapes = nlohmann::json::array();
+    nlohmann::ordered_json shapes = nlohmann::ordered_json::array();
     for (const ClusterShape& s : system.shapes()) {
-        nlohmann::json spheres = nlohmann::json::array();
+        nlohmann::ordered_json spheres = nlohmann::ordered_json::array();
         for (const Sphere& sphere : s.spheres) spheres.push_back({sphere.centre.x(), sphere.centre.y(), sphere.centre.z(), sphere.radius});
         shapes.push_back({{"mass", s.mass}, {"inertia_body", vec(s.inertia)}, {"spheres", spheres}});
     }
     const ContactMaterial& m = scene.material();
-    nlohmann::json params = nlohmann::json::object();
+    nlohmann::ordered_json params = nlohmann::ordered_json::object();
     for (const auto& [key, values] : spec.params) params[key] = values;
     const SampleSteps samples = granular_sample_steps(scene, spec.dt);
-    const nlohmann::json j = {{"format", "rotbench-granular-scene 1"},
+    const nlohmann::ordered_json j = {{"format", "rotbench-granular-scene 1"},
                               {"scene", spec.scene},
-                              {"params", params},
                               {"gravity", vec(scene.gravity())},
                               {"material",
                                {{"density", scene.params.number("density")},
@@ -118,7 +117,8 @@ std::string granular_scene_json(const GranularScene& scene, const RunSpec& spec,
                               {"steps", steps},
                               {"sample_first", samples.first},
                               {"sample_stride", samples.stride},
-                              {"columns", granular_samples_header}};
+                              {"columns", granular_samples_header},
+                              {"params", params}};  // last: the user's keys after the scene's own
     return j.dump(2) + "\n";
 }
 
