@@ -39,11 +39,19 @@ std::string energy_cell(const SchemeVerdict& v) {
     switch (v.energy) {
         case EnergyVerdict::none: return "—";
         case EnergyVerdict::kept: return "kept";
-        case EnergyVerdict::drifting: return fmt::format("drifting (grew {:.3g}x){}", v.energy_growth, failures);
+        case EnergyVerdict::drifting:
+            return fmt::format("drifting (grew {:.3g}x){}{}", v.energy_growth, v.claims_bounded_energy ? "" : ", not claimed", failures);
         case EnergyVerdict::not_judged: return "not judged" + failures;
         case EnergyVerdict::bounded: return fmt::format("bounded (≤ {:.1e})", v.energy_bounded_max);
     }
     return "—";
+}
+
+std::string claims_cell(const SchemeVerdict& v) {
+    if (v.control) return "control";
+    if (v.claims_judged == 0) return "not claimed";
+    if (v.claims_failed.empty()) return "yes";
+    return "**no**: " + fmt::format("{}", fmt::join(v.claims_failed, "; "));
 }
 
 std::string stability_cell(const SchemeVerdict& v) {
@@ -88,15 +96,19 @@ std::string verdict_section(const ResultSet& set, const std::vector<SchemeVerdic
         "this kind of figure, on its own scene. A client's figure is its program's wall time per step, \"(client, wall)\": the "
         "horizon run (8 T) less the trajectory run (T) at the coarsest dt, over the steps added, so its start-up drops out; it "
         "is not a CPU time, and the rankings leave it out.\n\n"
-        "| scheme | order, free | order, torque | momentum | energy | stability / Peng | ns / step |\n"
-        "|---|---|---|---|---|---|---:|\n",
+        "*Meets its claims*: every claim the scheme registers, judged by the gate's judges on this sweep's runs of the default "
+        "gate's claim scenes (`asymmetric_free` and `tumbling_brick` without torque, `dipole_top` with it) and their horizon runs; "
+        "\"no\" names the claims that fail, \"not claimed\" where it claims nothing judged here.\n\n"
+        "| scheme | order, free | order, torque | momentum | energy | stability / Peng | ns / step | meets its claims |\n"
+        "|---|---|---|---|---|---|---:|---|\n",
         energy_horizon, energy_growth_bound, cost_on, metric::omega_err_max);
     for (const auto& v : verdicts)
-        md += fmt::format("| `{}`{} | {} | {} | {} | {} | {} | {} |\n", v.scheme, v.control ? " (control)" : "", order_cell(v.free),
+        md += fmt::format("| `{}`{} | {} | {} | {} | {} | {} | {} | {} |\n", v.scheme, v.control ? " (control)" : "", order_cell(v.free),
                           order_cell(v.torque), momentum_cell(v), energy_cell(v), stability_cell(v),
                           std::isfinite(v.ns_per_step)             ? fmt::format("{:.0f}", v.ns_per_step)
                           : std::isfinite(v.client_wall_ns_per_step) ? fmt::format("{:.3g} (client, wall)", v.client_wall_ns_per_step)
-                                                                     : "—");
+                                                                     : "—",
+                          claims_cell(v));
     if (!has_stability)
         md += "\nNo stability study in this directory: `rotbench stability --out DIR` writes one beside the runs, and "
               "`rotbench report DIR` then includes it.\n";

@@ -207,3 +207,9 @@ TEST_CASE("claims: the report's energy verdict is the gate's judgement of the sa
         CHECK((table.find(passed ? "| bounded (" : "| drifting (") != std::string::npos));
     }
 }
+
+TEST_CASE("claims: the report judges claims on the default gate's claim scenes, which the gate file lists too") {
+    const GateFile gate = load_gate(DEFAULT_GATE);
+    CHECK(gate.claims.free_scenes == default_claim_scenes(false));
+    CHECK(gate.claims.torque_scenes == default_claim_scenes(true));
+}

@@ -115,3 +115,26 @@ TEST_CASE("plug-in: a schemes.json that is not rotbench's is refused in one line
     }
     fs::remove_all(dir);
 }
+
+TEST_CASE("plug-ins: the report's 'meets its claims' agrees with the gate on a plug-in that claims 2 and shows 1") {
+    const fs::path dir = fresh_dir("plugin_meets_claims");
+    const std::vector<std::string> schemes = {"--scenes", "asymmetric_free,tumbling_brick", "--schemes", "zvw_end_velocity,zvw_corrected"};
+    std::vector<std::string> run = {"--plugin", PLUGIN_END_VELOCITY_ZVW, "run", "--quiet", "--out", (dir / "out").string()};
+    run.insert(run.end(), schemes.begin(), schemes.end());
+    const Cli r = cli(run);
+    INFO(r.err);
+    REQUIRE(r.status == 0);
+    const std::string md = read(dir / "out" / "report.md");
+    const auto row = [&](const std::string& id) {
+        const auto at = md.find("| `" + id + "` |");
+        return at == std::string::npos ? std::string() : md.substr(at, md.find('\n', at) - at);
+    };
+    CHECK_THAT(row("zvw_end_velocity"), Catch::EndsWith("| **no**: order_without_torque on asymmetric_free; order_without_torque on tumbling_brick |"));
+    CHECK_THAT(row("zvw_corrected"), Catch::EndsWith("| yes |"));
+    // The gate, on the same scenes and ladders, fails the same claims.
+    const Cli g = cli({"--plugin", PLUGIN_END_VELOCITY_ZVW, "gate", DEFAULT_GATE, "--schemes", "zvw_end_velocity"});
+    CHECK(g.status == 1);
+    CHECK_THAT(g.out, Catch::Contains("FAIL asymmetric_free/zvw_end_velocity: zvw_end_velocity: order_without_torque") &&
+                          Catch::Contains("FAIL tumbling_brick/zvw_end_velocity: zvw_end_velocity: order_without_torque"));
+    fs::remove_all(dir);
+}

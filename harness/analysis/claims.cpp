@@ -188,6 +188,11 @@ Judgement judge_momentum(const RunRefs& runs) {
     return j;
 }
 
+const std::vector<std::string>& default_claim_scenes(bool with_torque) {
+    static const std::vector<std::string> free = {"asymmetric_free", "tumbling_brick"}, torque = {"dipole_top"};
+    return with_torque ? torque : free;
+}
+
 Judgement judge_same_map(const RunRefs& runs, const std::string& counterpart) {
     auto [j, run] = within_round_off(runs, {metric::counterpart_omega_diff_max, metric::counterpart_angle_diff_max});
     if (run && std::isnan(j.measured)) {

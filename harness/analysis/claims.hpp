@@ -31,6 +31,11 @@ struct Judgement {
 bool judged_without_torque(const SceneInfo& scene);
 bool judged_with_torque(const SceneInfo& scene);
 bool judges_energy(const SceneInfo& scene);
+// Of those, the ones the report judges a scheme's claims on, as the default gate does (its
+// [claims] lists the same scenes; tests/test_claims.cpp keeps the two equal): the free top and
+// the tumbling brick without torque, the dipole top with one. The other scenes' ladders are not
+// all asymptotic (dzhanibekov's flip, fast_spin), so an order there is shown, not judged.
+const std::vector<std::string>& default_claim_scenes(bool with_torque);
 
 // The horizon run that judges bounded energy on a scene of a sweep: at the coarsest of its
 // steps, `dts`, over the scene's duration t_end and energy_horizon times it.

@@ -96,6 +96,41 @@ void energy_verdict(const ResultSet& set, SchemeVerdict& v) {
                                           : EnergyVerdict::bounded;
 }
 
+// Its claims on the runs of the sweep, by the claims module's judges on the scenes the claims
+// module says judge them: the gate's verdicts, on whatever ladder the sweep ran.
+void claims_verdict(const ResultSet& set, SchemeVerdict& v) {
+    const SchemeInfo* info = set.scheme(v.scheme);
+    if (!info || !info->claims.sound) return;
+    const SchemeClaims& c = info->claims;
+    v.claims_bounded_energy = c.bounded_energy;
+    std::map<std::string, RunRefs> ladders;  // scene -> its trajectory runs
+    for (const auto& r : set.runs)
+        if (r.spec.scheme == v.scheme && r.spec.kind == RunKind::trajectory && r.spec.params.empty())  // the scene itself, not a variant
+            ladders[r.spec.scene].push_back(&r);
+    const auto judge = [&](const Judgement& j, const std::string& claim, const std::string& scene) {
+        ++v.claims_judged;
+        if (!j.passed) v.claims_failed.push_back(claim + " on " + scene);
+    };
+    const auto claims_scene = [](const std::string& scene, bool with_torque) {
+        const auto& list = default_claim_scenes(with_torque);
+        return std::find(list.begin(), list.end(), scene) != list.end();
+    };
+    for (const auto& [scene, runs] : ladders) {
+        const SceneInfo& info_of = set.scene(scene);
+        if (claims_scene(scene, false) && judged_without_torque(info_of)) {
+            if (c.without_torque.order > 0 && runs.size() >= 3) judge(judge_order(runs, c.without_torque.order), "order_without_torque", scene);
+            if (c.exact_without_torque) judge(judge_exact(runs), "exact_without_torque", scene);
+            if (c.conserves_momentum) judge(judge_momentum(runs), "conserves_momentum", scene);
+        }
+        if (claims_scene(scene, true) && judged_with_torque(info_of) && c.with_torque.order > 0 && runs.size() >= 3)
+            judge(judge_order(runs, c.with_torque.order), "order_with_torque", scene);
+    }
+    if (c.bounded_energy)
+        for (const auto& h : set.horizons)
+            if (h.spec.scheme == v.scheme && h.spec.params.empty() && claims_scene(h.spec.scene, true) && judged_with_torque(set.scene(h.spec.scene)))
+                judge(judge_bounded_energy(h), "bounded_energy", h.spec.scene);
+}
+
 void stability_verdict(const std::vector<StabilityRow>& stability, SchemeVerdict& v) {
     for (const auto& s : stability) {
         if (s.scheme != v.scheme || s.omega_max != 0) continue;
@@ -157,6 +192,7 @@ std::vector<SchemeVerdict> scheme_verdicts(const ResultSet& set, const std::vect
         v.free = order_verdict(set, orders, v.scheme, false);
         v.torque = order_verdict(set, orders, v.scheme, true);
         momentum_verdict(set, v);
+        claims_verdict(set, v);
         energy_verdict(set, v);
         stability_verdict(stability, v);
         std::vector<double> ns;

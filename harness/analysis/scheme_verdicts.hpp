@@ -45,6 +45,12 @@ struct SchemeVerdict {
     std::string energy_failed;                          // scenes whose horizon run failed
     double stability_lo = NAN, stability_hi = NAN;      // measured limit / Peng's over the contact pairs
     std::string stability_weak, stability_failed;       // "scene ζ = z" lists
+    // Its claims (SchemeClaims) judged as the gate judges them, on the runs there are: "" when
+    // every judged claim holds, else the claims that fail, "claim on scene"; claims_judged counts
+    // the judgements made (0: nothing claimed, or nothing here to judge it on).
+    std::vector<std::string> claims_failed;
+    int claims_judged = 0;
+    bool claims_bounded_energy = false;  // whether it claims bounded energy at all
     double ns_per_step = NAN;                            // the report's cost figure, on cost_scene()
     // A client's own cost on cost_scene(), never ranked with ns_per_step: its program's wall time per
     // step with the start-up removed, from two lengths of one run (the horizon run, 8 T at the
