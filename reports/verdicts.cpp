@@ -95,10 +95,10 @@ std::string verdict_section(const ResultSet& set, const std::vector<SchemeVerdic
         "body; the per-thread CPU time of a run without its metrics over its steps); every CPU time in the report is "
         "this kind of figure, on its own scene. A client's figure is its program's wall time per step, \"(client, wall)\": the "
         "horizon run (8 T) less the trajectory run (T) at the coarsest dt, over the steps added, so its start-up drops out; it "
-        "is not a CPU time, and the rankings leave it out.\n\n"
-        "*Meets its claims*: every claim the scheme registers, judged by the gate's judges on this sweep's runs of the default "
-        "gate's claim scenes (`asymmetric_free` and `tumbling_brick` without torque, `dipole_top` with it) and their horizon runs; "
-        "\"no\" names the claims that fail, \"not claimed\" where it claims nothing judged here.\n\n"
+        "is not a CPU time, and the rankings leave it out. *Meets its claims*: every claim the scheme registers, judged by the "
+        "gate's judges on this sweep's runs of the default gate's claim scenes (`asymmetric_free` and `tumbling_brick` without "
+        "torque, `dipole_top` with it) and their horizon runs; \"no\" names the claims that fail, \"not claimed\" where it "
+        "claims nothing judged here.\n\n"
         "| scheme | order, free | order, torque | momentum | energy | stability / Peng | ns / step | meets its claims |\n"
         "|---|---|---|---|---|---|---:|---|\n",
         energy_horizon, energy_growth_bound, cost_on, metric::omega_err_max);
