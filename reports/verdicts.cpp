@@ -49,7 +49,8 @@ std::string energy_cell(const SchemeVerdict& v) {
 
 std::string claims_cell(const SchemeVerdict& v) {
     if (v.control) return "control";
-    if (v.claims_judged == 0) return "not claimed";
+    if (!v.claims_anything) return "nothing claimed";
+    if (v.claims_judged == 0) return "not judged here";
     if (v.claims_failed.empty()) return "yes";
     return "**no**: " + fmt::format("{}", fmt::join(v.claims_failed, "; "));
 }
@@ -97,8 +98,8 @@ std::string verdict_section(const ResultSet& set, const std::vector<SchemeVerdic
         "horizon run (8 T) less the trajectory run (T) at the coarsest dt, over the steps added, so its start-up drops out; it "
         "is not a CPU time, and the rankings leave it out. *Meets its claims*: every claim the scheme registers, judged by the "
         "gate's judges on this sweep's runs of the default gate's claim scenes (`asymmetric_free` and `tumbling_brick` without "
-        "torque, `dipole_top` with it) and their horizon runs; \"no\" names the claims that fail, \"not claimed\" where it "
-        "claims nothing judged here.\n\n"
+        "torque, `dipole_top` with it) and their horizon runs; \"no\" names the claims that fail, \"not judged here\" where "
+        "none of those scenes ran, \"nothing claimed\" where it claims nothing.\n\n"
         "| scheme | order, free | order, torque | momentum | energy | stability / Peng | ns / step | meets its claims |\n"
         "|---|---|---|---|---|---|---:|---|\n",
         energy_horizon, energy_growth_bound, cost_on, metric::omega_err_max);

@@ -103,6 +103,8 @@ void claims_verdict(const ResultSet& set, SchemeVerdict& v) {
     if (!info || !info->claims.sound) return;
     const SchemeClaims& c = info->claims;
     v.claims_bounded_energy = c.bounded_energy;
+    v.claims_anything = c.without_torque.order > 0 || c.with_torque.order > 0 || c.exact_without_torque || c.conserves_momentum ||
+                        c.bounded_energy;
     std::map<std::string, RunRefs> ladders;  // scene -> its trajectory runs
     for (const auto& r : set.runs)
         if (r.spec.scheme == v.scheme && r.spec.kind == RunKind::trajectory && r.spec.params.empty())  // the scene itself, not a variant

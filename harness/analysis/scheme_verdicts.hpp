@@ -50,6 +50,7 @@ struct SchemeVerdict {
     // the judgements made (0: nothing claimed, or nothing here to judge it on).
     std::vector<std::string> claims_failed;
     int claims_judged = 0;
+    bool claims_anything = false;  // it registers a claim at all (an order, exactness, momentum, energy)
     bool claims_bounded_energy = false;  // whether it claims bounded energy at all
     double ns_per_step = NAN;                            // the report's cost figure, on cost_scene()
     // A client's own cost on cost_scene(), never ranked with ns_per_step: its program's wall time per
