@@ -100,11 +100,11 @@ std::string verdict_section(const ResultSet& set, const std::vector<SchemeVerdic
         "gate's judges on this sweep's runs of the default gate's claim scenes (`asymmetric_free` and `tumbling_brick` without "
         "torque, `dipole_top` with it) and their horizon runs; \"no\" names the claims that fail, \"not judged here\" where "
         "none of those scenes ran, \"nothing claimed\" where it claims nothing.\n\n"
-        "| scheme | order, free | order, torque | momentum | energy | stability / Peng | ns / step | meets its claims |\n"
-        "|---|---|---|---|---|---|---:|---|\n",
+        "| scheme | order, free | order, torque | momentum; energy | stability / Peng | ns / step | meets its claims |\n"
+        "|---|---|---|---|---|---:|---|\n",
         energy_horizon, energy_growth_bound, cost_on, metric::omega_err_max);
     for (const auto& v : verdicts)
-        md += fmt::format("| `{}`{} | {} | {} | {} | {} | {} | {} | {} |\n", v.scheme, v.control ? " (control)" : "", order_cell(v.free),
+        md += fmt::format("| `{}`{} | {} | {} | {}; {} | {} | {} | {} |\n", v.scheme, v.control ? " (control)" : "", order_cell(v.free),
                           order_cell(v.torque), momentum_cell(v), energy_cell(v), stability_cell(v),
                           std::isfinite(v.ns_per_step)             ? fmt::format("{:.0f}", v.ns_per_step)
                           : std::isfinite(v.client_wall_ns_per_step) ? fmt::format("{:.3g} (client, wall)", v.client_wall_ns_per_step)
