@@ -342,3 +342,22 @@ TEST_CASE("the gate points a plug-in's failed claim at its registration, and nam
     CHECK_THAT(summary, Catch::Contains("\"build\": \"" ROTBENCH_PLUGIN_BUILD "\""));
     fs::remove_all(dir);
 }
+
+TEST_CASE("gate --schemes: a scheme the file names that is not loaded is a warning outside the selection, an error in it") {
+    const fs::path dir = fresh_dir("gate_unloaded");
+    fs::create_directories(dir);
+    write(dir / "g.toml",
+          "[claims]\nschemes = [\"richardson\", \"some_client\"]\nfree = [\"asymmetric_free\", \"tumbling_brick\"]\ntorque = [\"dipole_top\"]\n"
+          "[[check]]\nname = \"brick\"\nscene = \"tumbling_brick\"\nschemes = [\"some_client\"]\nmin_order = 0.8\n"
+          "[[expected_failure]]\ncheck = \"brick\"\nscene = \"tumbling_brick\"\nscheme = \"some_client\"\nreason = \"known\"\n");
+    const Cli selected = cli({"gate", (dir / "g.toml").string(), "--schemes", "richardson"});
+    INFO(selected.out << selected.err);
+    CHECK(selected.status == 0);
+    CHECK_THAT(selected.out, Catch::Contains("WARNING " + (dir / "g.toml").string() + ":") &&
+                                 Catch::Contains(": scheme 'some_client' is not loaded; outside --schemes, skipped"));
+    CHECK(selected.out.find("not loaded", selected.out.find("not loaded") + 1) == std::string::npos);  // said once
+    const Cli all = cli({"gate", (dir / "g.toml").string()});
+    CHECK(all.status == 2);
+    CHECK_THAT(all.err, Catch::Contains("unknown scheme 'some_client'"));
+    fs::remove_all(dir);
+}

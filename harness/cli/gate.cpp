@@ -54,8 +54,9 @@ public:
 
     bool resumable() const override { return true; }
     int run(const Invocation& how) override {
-        GateFile file = load_gate(file_);
-        if (!schemes_.empty()) file = only_schemes(std::move(file), parse_id_list(schemes_, SchemeRegistry::instance(), "scheme"));
+        const std::vector<std::string> only = schemes_.empty() ? std::vector<std::string>{} : parse_id_list(schemes_, SchemeRegistry::instance(), "scheme");
+        GateFile file = load_gate(file_, only);
+        if (!only.empty()) file = only_schemes(std::move(file), only);
         const GatePlan plan = plan_gate(file);
         const PlanSlice slice = slice_plan(plan.runs, shard_);
         if (slice.shard && out_.empty()) throw InputError("--shard needs --out: a slice's runs are only worth their files");

@@ -14,6 +14,7 @@
 #include <cmath>
 #include <fmt/format.h>
 #include <map>
+#include <optional>
 
 namespace rotbench {
 namespace {
@@ -47,7 +48,33 @@ std::vector<std::string> sound_schemes() {
     return out;
 }
 
-GateCheck read_check(const std::string& path, const toml::table& t, std::size_t index) {
+// gate --schemes: the selection, and the warnings for the schemes the file names outside it
+// that are not loaded.
+struct Selection {
+    std::vector<std::string> only;
+    std::vector<std::string>* warnings = nullptr;
+    // Unknown, and outside a given selection: skipped (said once), not refused.
+    bool skips(const std::string& id, const std::string& where) const {
+        if (only.empty() || SchemeRegistry::instance().contains(id) || std::find(only.begin(), only.end(), id) != only.end()) return false;
+        const std::string what = "scheme '" + id + "' is not loaded; outside --schemes, skipped";  // said once, where first named
+        if (std::none_of(warnings->begin(), warnings->end(), [&](const std::string& w) { return w.ends_with(": " + what); }))
+            warnings->push_back(where + ": " + what);
+        return true;
+    }
+    // The schemes of a list, less those skipped; an unknown one in the selection (or without
+    // one) refused, naming file, line and column, as ids() does.
+    std::vector<std::string> schemes(const std::string& path, const std::string& key, const toml::node& node) const {
+        std::vector<std::string> kept;
+        const std::string where = fmt::format("{}:{}", path, node.source().begin.line);
+        for (const auto& id : strings(path, key, node))
+            if (!skips(id, where)) kept.push_back(id);
+        for (const auto& id : kept)
+            if (!SchemeRegistry::instance().contains(id)) return ids(path, key, node, SchemeRegistry::instance(), "scheme");  // throws
+        return kept;
+    }
+};
+
+GateCheck read_check(const std::string& path, const toml::table& t, std::size_t index, const Selection& selection) {
     GateCheck c;
     c.location = fmt::format("{}:{}", path, t.source().begin.line);
     std::string metric;
@@ -113,7 +140,7 @@ GateCheck read_check(const std::string& path, const toml::table& t, std::size_t 
     c.metric = metric_of(c.criterion, metric);
     const auto names = strings(path, "schemes", *schemes_node);
     if (names.size() == 1 && names[0] == "*") c.schemes = sound_schemes();
-    else c.schemes = ids(path, "schemes", *schemes_node, SchemeRegistry::instance(), "scheme");
+    else c.schemes = selection.schemes(path, "schemes", *schemes_node);
     if (except_node) {  // "*" but these: a check that covers plug-ins yet leaves out a scheme held to another bound
         if (!(names.size() == 1 && names[0] == "*")) toml_error(path, *except_node, "'except' applies to schemes = [\"*\"] only");
         for (const auto& id : ids(path, "except", *except_node, SchemeRegistry::instance(), "scheme"))
@@ -158,7 +185,7 @@ std::vector<std::string> claim_scenes(const std::string& path, const std::string
     return list;
 }
 
-ClaimsSection read_claims(const std::string& path, const toml::table& t) {
+ClaimsSection read_claims(const std::string& path, const toml::table& t, const Selection& selection) {
     ClaimsSection c;
     c.present = true;
     c.location = fmt::format("{}:{}", path, t.source().begin.line);
@@ -167,8 +194,7 @@ ClaimsSection read_claims(const std::string& path, const toml::table& t) {
         const std::string key(k.str());
         if (key == "schemes") {
             const auto names = strings(path, key, v);
-            c.schemes = names.size() == 1 && names[0] == "*" ? SchemeRegistry::instance().ids()
-                                                               : ids(path, key, v, SchemeRegistry::instance(), "scheme");
+            c.schemes = names.size() == 1 && names[0] == "*" ? SchemeRegistry::instance().ids() : selection.schemes(path, key, v);
             has_schemes = true;
         } else if (key == "free") {
             c.free_scenes = claim_scenes(path, key, v, false);
@@ -185,7 +211,8 @@ ClaimsSection read_claims(const std::string& path, const toml::table& t) {
     return c;
 }
 
-ExpectedFailure read_expected_failure(const std::string& path, const toml::table& t) {
+// std::nullopt for one whose scheme gate --schemes skips.
+std::optional<ExpectedFailure> read_expected_failure(const std::string& path, const toml::table& t, const Selection& selection) {
     ExpectedFailure e;
     e.location = fmt::format("{}:{}", path, t.source().begin.line);
     for (auto&& [k, v] : t) {
@@ -194,6 +221,7 @@ ExpectedFailure read_expected_failure(const std::string& path, const toml::table
         else if (key == "reason") e.reason = text(path, key, v);
         else if (key == "scene" || key == "scheme") {
             const std::string id = text(path, key, v);
+            if (key == "scheme" && selection.skips(id, fmt::format("{}:{}", path, v.source().begin.line))) return std::nullopt;
             try {
                 if (key == "scene") SceneRegistry::instance().at(id, "scene");
                 else SchemeRegistry::instance().at(id, "scheme");
@@ -210,21 +238,22 @@ ExpectedFailure read_expected_failure(const std::string& path, const toml::table
     return e;
 }
 
-GateFile gate_from_toml(const toml::table& root, const std::string& path) {
+GateFile gate_from_toml(const toml::table& root, const std::string& path, const std::vector<std::string>& only) {
     GateFile file;
     file.path = path;
+    const Selection selection{only, &file.warnings};
     for (auto&& [name, node] : root) {
         const std::string key(name.str());
         if (key == "claims" && node.as_table()) {
-            file.claims = read_claims(path, *node.as_table());
+            file.claims = read_claims(path, *node.as_table(), selection);
             continue;
         }
         const auto* array = node.as_array();
         if ((key != "check" && key != "expected_failure") || !array || !array->is_array_of_tables())
             toml_error(path, node, "unknown entry '" + key + "'; a gate file holds [claims], [[check]] and [[expected_failure]] tables");
         for (const auto& item : *array) {
-            if (key == "check") file.checks.push_back(read_check(path, *item.as_table(), file.checks.size()));
-            else file.expected_failures.push_back(read_expected_failure(path, *item.as_table()));
+            if (key == "check") file.checks.push_back(read_check(path, *item.as_table(), file.checks.size(), selection));
+            else if (auto e = read_expected_failure(path, *item.as_table(), selection)) file.expected_failures.push_back(*e);
         }
     }
     if (file.checks.empty() && !file.claims.present) throw InputError(path + ": no [claims] and no [[check]] in the gate file");
@@ -260,13 +289,13 @@ const std::vector<std::string>& claim_ids() {
     return ids;
 }
 
-GateFile load_gate(const std::string& path) {
+GateFile load_gate(const std::string& path, const std::vector<std::string>& only) {
     const std::string text = read_input_file(path, "", 1u << 20);  // as parse_toml_file bounds it
-    return parse_gate(text, path);
+    return parse_gate(text, path, only);
 }
 
-GateFile parse_gate(std::string_view text, const std::string& name) {
-    GateFile file = gate_from_toml(parse_toml_text(text, name), name);
+GateFile parse_gate(std::string_view text, const std::string& name, const std::vector<std::string>& only) {
+    GateFile file = gate_from_toml(parse_toml_text(text, name), name, only);
     file.hash = Fnv1a().feed(text).hex();
     return file;
 }

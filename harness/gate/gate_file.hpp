@@ -64,6 +64,7 @@ struct GateFile {
     ClaimsSection claims;
     std::vector<GateCheck> checks;
     std::vector<ExpectedFailure> expected_failures;
+    std::vector<std::string> warnings;  // schemes the file names that are skipped (see load_gate)
 };
 
 // The claim checks a [claims] section makes, by id (what an [[expected_failure]] may name).
@@ -73,9 +74,11 @@ const std::vector<std::string>& claim_ids();
 // schemes, and their expected failures, left out. A check left without a scheme goes.
 GateFile only_schemes(GateFile file, const std::vector<std::string>& schemes);
 
-// Reads and checks a gate file; every error names file, line and column (InputError).
-GateFile load_gate(const std::string& path);
+// Reads and checks a gate file; every error names file, line and column (InputError). With
+// `only` (gate --schemes), a scheme the file names that is not loaded and not in `only` is left
+// out with a warning instead of refused: a clients' gate can judge one client file of several.
+GateFile load_gate(const std::string& path, const std::vector<std::string>& only = {});
 // The same for text already read; `name` stands for the file in messages.
-GateFile parse_gate(std::string_view text, const std::string& name);
+GateFile parse_gate(std::string_view text, const std::string& name, const std::vector<std::string>& only = {});
 
 }  // namespace rotbench

@@ -164,6 +164,7 @@ GatePlan plan_gate(const GateFile& file) {
     planner.claims();
     planner.checks();
     GatePlan plan = planner.take();
+    plan.warnings.insert(plan.warnings.begin(), file.warnings.begin(), file.warnings.end());
     for (const auto& p : loaded_plugins())
         if (const std::string w = build_warning(p); !w.empty()) plan.warnings.push_back(w);
     return plan;
