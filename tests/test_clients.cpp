@@ -157,6 +157,14 @@ TEST_CASE("clients: a bad client file is refused in one line naming the file, li
     CHECK_THAT(refused(ok + "claims = \"fincham\"\nscenes2 = 1\n"), Catch::Contains("unknown key 'scenes2'"));
     CHECK_THAT(refused("id = \"c\"\nprogram = [\"true\"]\nscenes = [\"asymmetric_fre\"]\nclaims = \"direct\"\n"),
                Catch::Contains("unknown scene 'asymmetric_fre'"));
+    // A folder whose path holds "{dir}": substituted once, not again and again (it never ended).
+    const fs::path odd = dir / "x{dir}y";
+    fs::create_directories(odd);
+    write(odd / "c.toml", "id = \"c_odd\"\nprogram = [\"{dir}/run.sh\"]\nscenes = [\"asymmetric_free\"]\nclaims = \"direct\"\n");
+    write(odd / "run.sh", "#!/bin/sh\n");
+    fs::permissions(odd / "run.sh", fs::perms::owner_all);
+    const Cli odd_dir = cli({"--client", (odd / "c.toml").string(), "list"});
+    CHECK(odd_dir.status == 0);
     // A program that cannot be started is refused at load, by its path, not found out as "status 127" per run.
     CHECK_THAT(refused("id = \"c\"\nprogram = [\"no_such_program_here\"]\nscenes = [\"asymmetric_free\"]\nclaims = \"direct\"\n"),
                Catch::Contains("c.toml:2:11: program 'no_such_program_here' is not found on PATH"));

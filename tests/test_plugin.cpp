@@ -31,6 +31,9 @@ TEST_CASE("plug-in: bad plug-ins give one line on stderr and exit status 2") {
         {PLUGIN_NOT_A_PLUGIN, "not a rotbench plug-in"},
         {PLUGIN_WRONG_ABI, "ABI mismatch: the plug-in was built for 'rotbench-plugin-abi 0;"},
         {DEFAULT_GATE, "cannot load"},  // not a shared library at all
+        {PLUGIN_NULL_ABI, "its rotbench_plugin_abi returned no text"},  // each was a SIGSEGV or an internal error, exit 4
+        {PLUGIN_NULL_SCHEMES, "its rotbench_plugin_schemes returned NULL"},
+        {PLUGIN_NULL_BUILD, "its rotbench_plugin_build returned NULL"},
     };
     for (const auto& c : cases) {
         const Cli r = cli({"list", "--plugin", c.path});

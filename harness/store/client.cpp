@@ -140,7 +140,8 @@ std::string load_client(const std::string& path) {
         toml_error(path, *id_node, "scheme '" + client.id + "' is already registered; give the client another id");
     const std::string dir = std::filesystem::path(absolute).parent_path().string();
     for (std::string argument : strings(path, "program", *program_node)) {
-        for (std::size_t at; (at = argument.find("{dir}")) != std::string::npos;) argument.replace(at, 5, dir);
+        // From after each replacement: a folder whose path holds "{dir}" is not substituted again.
+        for (std::size_t at = 0; (at = argument.find("{dir}", at)) != std::string::npos; at += dir.size()) argument.replace(at, 5, dir);
         client.program.push_back(argument);
     }
     if (client.program.empty() || client.program.front().empty()) toml_error(path, *program_node, "'program' names no program");

@@ -66,8 +66,14 @@ std::vector<std::string> load_plugin(const std::string& path) {
         throw InputError(where + ": not a rotbench plug-in (no rotbench_plugin_abi / rotbench_plugin_schemes); build it "
                                  "with rotbench_add_scheme() from find_package(rotbench)");
     }
-    if (std::string(abi()) != ROTBENCH_PLUGIN_ABI) {
-        const std::string theirs = abi();
+    // Each entry point's answer is checked before use: a NULL from any is a broken plug-in, not a crash.
+    const char* abi_text = abi();
+    if (!abi_text) {
+        dlclose(handle);
+        throw InputError(where + ": its rotbench_plugin_abi returned no text; rebuild it with rotbench_add_scheme()");
+    }
+    if (std::string(abi_text) != ROTBENCH_PLUGIN_ABI) {
+        const std::string theirs = abi_text;
         dlclose(handle);
         throw InputError(where + ": ABI mismatch: the plug-in was built for '" + theirs + "', this rotbench is '" +
                          ROTBENCH_PLUGIN_ABI + "'; rebuild the plug-in against this rotbench");
@@ -76,7 +82,14 @@ std::vector<std::string> load_plugin(const std::string& path) {
         dlclose(handle);
         throw InputError(where + ": no rotbench_plugin_build; build it with rotbench_add_scheme() from find_package(rotbench)");
     }
-    const SchemeRegistry& theirs = *schemes();
+    const SchemeRegistry* registry = schemes();
+    const char* build_text = build();
+    if (!registry || !build_text) {
+        dlclose(handle);
+        throw InputError(where + ": its " + (registry ? "rotbench_plugin_build" : "rotbench_plugin_schemes") +
+                         " returned NULL; rebuild it with rotbench_add_scheme()");
+    }
+    const SchemeRegistry& theirs = *registry;
     const auto ids = theirs.ids();
     if (ids.empty()) throw InputError(where + ": the plug-in registers no scheme");
     auto& ours = SchemeRegistry::instance();
@@ -86,7 +99,7 @@ std::vector<std::string> load_plugin(const std::string& path) {
             throw InputError(where + ": scheme '" + id + "' is already registered; give the plug-in's scheme another id");
     }
     for (const auto& id : ids) ours.add(theirs.at(id, "scheme"));
-    plugins().push_back({absolute, hash, ids, build()});
+    plugins().push_back({absolute, hash, ids, build_text});
     return ids;  // the handle is kept open: the factories live in the library
 }
 
