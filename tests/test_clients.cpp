@@ -165,6 +165,10 @@ TEST_CASE("clients: a bad client file is refused in one line naming the file, li
     fs::permissions(odd / "run.sh", fs::perms::owner_all);
     const Cli odd_dir = cli({"--client", (odd / "c.toml").string(), "list"});
     CHECK(odd_dir.status == 0);
+    // The same client file through a symlink is the same client, loaded once; {dir} its real folder.
+    fs::create_symlink(odd / "c.toml", dir / "link.toml");
+    const Cli linked = cli({"--client", (odd / "c.toml").string(), "--client", (dir / "link.toml").string(), "list"});
+    CHECK(linked.status == 0);
     // A program that cannot be started is refused at load, by its path, not found out as "status 127" per run.
     CHECK_THAT(refused("id = \"c\"\nprogram = [\"no_such_program_here\"]\nscenes = [\"asymmetric_free\"]\nclaims = \"direct\"\n"),
                Catch::Contains("c.toml:2:11: program 'no_such_program_here' is not found on PATH"));

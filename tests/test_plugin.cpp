@@ -55,6 +55,10 @@ TEST_CASE("plug-in: a scheme id another file registered is refused, and the same
     CHECK(clash.status == 2);
     CHECK_THAT(clash.err, Catch::Contains("scheme 'plugin_"));
     CHECK_THAT(clash.err, Catch::Contains("is already registered"));
+    // The same file through a symlink is the same plug-in, loaded once.
+    fs::create_symlink(PLUGIN_MISBEHAVING, dir / "link.so");
+    const Cli linked = cli({"list", "--plugin", PLUGIN_MISBEHAVING, "--plugin", (dir / "link.so").string()});
+    CHECK(linked.status == 0);
     fs::remove_all(dir);
 }
 

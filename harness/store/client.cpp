@@ -120,7 +120,8 @@ static std::string executable(const std::string& path, const toml::node& where, 
 
 std::string load_client(const std::string& path) {
     const std::string bytes = read_input_file(path, "--client");
-    const std::string absolute = std::filesystem::absolute(path).lexically_normal().string(), hash = Fnv1a().feed(bytes).hex();
+    // Symlinks resolved: the same file reached another way is loaded once, and {dir} is its real folder.
+    const std::string absolute = std::filesystem::weakly_canonical(std::filesystem::absolute(path)).string(), hash = Fnv1a().feed(bytes).hex();
     for (const auto& c : clients())
         if (c.path == absolute && c.hash == hash) return c.id;  // the same file again
     const toml::table file = parse_toml_text(bytes, path);
