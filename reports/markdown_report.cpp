@@ -254,11 +254,13 @@ std::string markdown_report(const ResultSet& set, const std::string& command_lin
     const Provenance p = provenance();
     const auto failed = std::count_if(results.begin(), results.end(), [](const RunResult& r) { return r.value(metric::unstable) != 0.0; });
     std::string md = "# rotbench report\n\n";
+    // The count the progress lines gave: the horizon runs of the energy verdicts are runs too.
+    const std::string horizon_runs = set.horizons.empty() ? "" : fmt::format(" (besides {} horizon runs for the energy verdicts)", set.horizons.size());
     md += fmt::format(
-        "{} runs of {} scheme{} on {} scene{}, {} of them unstable or failed: which scheme meets which error at what dt, "
+        "{} runs of {} scheme{} on {} scene{}, {} of them unstable or failed{}: which scheme meets which error at what dt, "
         "and at what cost. Errors are in rad/s (angular velocity) and rad (orientation), drifts relative; the cost figure "
         "is `ns_per_step` (section {}). rotbench {} (commit {}), {} {}, flags `{}`, on {}; generated {} {} UTC by `{}`.\n\n",
-        results.size(), schemes.size(), schemes.size() == 1 ? "" : "s", scenes.size(), scenes.size() == 1 ? "" : "s", failed, link("Verdicts", "Verdicts"), p.version, p.commit, p.compiler,
+        results.size(), schemes.size(), schemes.size() == 1 ? "" : "s", scenes.size(), scenes.size() == 1 ? "" : "s", failed, horizon_runs, link("Verdicts", "Verdicts"), p.version, p.commit, p.compiler,
         p.build_type, p.flags, p.cpu, p.date.substr(0, 10), p.date.substr(11, 5), command_line);
     for (const auto& [id, info] : set.schemes)  // the header's flags are rotbench's own: say where a plug-in's differ
         if (!info.plugin_path.empty() && info.plugin_build != ROTBENCH_PLUGIN_BUILD)
