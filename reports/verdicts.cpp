@@ -110,6 +110,10 @@ std::string verdict_section(const ResultSet& set, const std::vector<SchemeVerdic
                           : std::isfinite(v.client_wall_ns_per_step) ? fmt::format("{:.3g} (client, wall)", v.client_wall_ns_per_step)
                                                                      : "—",
                           claims_cell(v));
+    for (const auto& r : set.declined)  // a client's "not mine": skipped, said, in no table
+        md += fmt::format("\n- Skipped: client `{}` declined `{}` at dt = {:g} ({} run): {}", r.spec.scheme, r.spec.scene, r.spec.dt,
+                          kind_name(r.spec.kind), r.failure.size() > 10 ? r.failure.substr(10) : "no reason given");
+    if (!set.declined.empty()) md += "\n";
     if (!has_stability)
         md += "\nNo stability study in this directory: `rotbench stability --out DIR` writes one beside the runs, and "
               "`rotbench report DIR` then includes it.\n";

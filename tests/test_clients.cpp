@@ -265,6 +265,33 @@ TEST_CASE("clients: `client check` runs a program once and names what is wrong w
     fs::remove_all(dir);
 }
 
+TEST_CASE("clients: a program that exits 3 declines a scene: skipped with its reason in run, report and gate, not failed") {
+    const fs::path dir = fresh_dir("client_decline");
+    const fs::path file = client_file(dir, "client_decliner", "no_squish", "--decline-torque");
+    const Cli r = cli({"--client", file.string(), "run", "--scenes", "asymmetric_free,dipole_top", "--schemes", "client_decliner", "--quick",
+                       "--out", (dir / "out").string()});
+    INFO(r.out << r.err);
+    REQUIRE(r.status == 0);
+    CHECK_THAT(r.out, Catch::Contains("skipped: dipole_top client_decliner trajectory dt=0.01: client declined: rotbench_client.py: "
+                                      "this client takes no torque"));
+    CHECK(r.out.find("FAILED") == std::string::npos);
+    const std::string md = read(dir / "out" / "report.md");
+    CHECK_THAT(md, Catch::Contains("- Skipped: client `client_decliner` declined `dipole_top` at dt = 0.01 (trajectory run): "
+                                   "rotbench_client.py: this client takes no torque"));
+    CHECK_THAT(md, Catch::Contains(", 0 of them unstable or failed"));  // the declined runs are in no table
+    const std::string orders = read(dir / "out" / "orders.csv");
+    CHECK(orders.find("asymmetric_free,client_decliner") != std::string::npos);
+    CHECK(orders.find("dipole_top,client_decliner") == std::string::npos);
+    // The gate: the torque claim not judged, a warning saying why; the free claims judged and passed.
+    const Cli g = cli({"--client", file.string(), "gate", DEFAULT_GATE, "--schemes", "client_decliner"});
+    INFO(g.out);
+    CHECK(g.status == 0);
+    CHECK_THAT(g.out, Catch::Contains("WARNING client client_decliner declined scene dipole_top (declined: rotbench_client.py: this client "
+                                      "takes no torque): not judged there"));
+    CHECK_THAT(g.out, Catch::Contains("PASS asymmetric_free/client_decliner"));
+    fs::remove_all(dir);
+}
+
 TEST_CASE("clients: a gate's same_map_as passes the counterpart's own map and fails another second-order one") {
     const fs::path dir = fresh_dir("client_map_same_map");
     const fs::path same = client_file(dir, "client_map_same", "richardson", "", "claims = \"richardson\"\ncounterpart = \"richardson\"\n");

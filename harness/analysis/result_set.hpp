@@ -27,6 +27,7 @@ struct SceneInfo {
 struct ResultSet {
     std::vector<RunResult> runs;      // every run but the horizon runs
     std::vector<RunResult> horizons;  // the horizon runs (RunKind::horizon), for the bounded-energy verdicts
+    std::vector<RunResult> declined;  // runs a client's program declined (metric::declined): in no table
     std::map<std::string, SceneInfo> scenes;    // every scene of the runs (with the parameters of its first run)
     SchemeInfos schemes;  // every scheme of the runs registered in this process or recorded with them
 

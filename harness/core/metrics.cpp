@@ -54,6 +54,9 @@ const std::vector<MetricInfo>& metric_table() {
         {.name = metric::client_cpu_seconds, .unit = "s", .kind = K::timing,
          .meaning = "a client's run: the CPU time of its program and the children it waited for, start-up included"},
         {.name = metric::client_wall_seconds, .unit = "s", .kind = K::timing, .meaning = "a client's run: its program's wall time"},
+        {.name = metric::declined, .unit = "0/1", .kind = K::flag, .integer = true,
+         .meaning = "1 when a client's program declined the run (exit status 3): a scene or parameters it cannot represent; "
+                    "skipped, not failed"},
         {.name = metric::timed_steps, .kind = K::count},
         {.name = metric::rotation_share, .kind = K::timing},
         {.name = metric::cost_ratio, .kind = K::timing,

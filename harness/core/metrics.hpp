@@ -51,6 +51,7 @@ ROTBENCH_METRIC(counterpart_omega_diff_max)
 ROTBENCH_METRIC(counterpart_angle_diff_max)
 ROTBENCH_METRIC(client_cpu_seconds)
 ROTBENCH_METRIC(client_wall_seconds)
+ROTBENCH_METRIC(declined)
 ROTBENCH_METRIC(ensemble_size)
 ROTBENCH_METRIC(ensemble_failed)
 #undef ROTBENCH_METRIC

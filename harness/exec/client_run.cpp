@@ -169,6 +169,10 @@ RunResult run_client(const RunSpec& requested, const RunOptions& options, const 
         r.metrics.emplace_back(metric::client_wall_seconds, out.wall_seconds);
         return r;
     };
+    if (out.exit_status == client_declines) {
+        RunResult declined{failed.spec, {{metric::declined, 1.0}}, "declined" + out.last_error_line};
+        return timed(std::move(declined));
+    }
     if (!out.failure.empty()) return timed(fail(out.failure));
     if (granular) {
         RunResult result = replay_granular_samples(requested, *granular, scratch.path / output, steps);

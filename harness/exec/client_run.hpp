@@ -26,6 +26,10 @@ std::string client_scene_json(const Scene& scene, const RunSpec& spec, double t_
 // kind, a scene the client file does not list, a program that fails, hangs or writes a
 // trajectory that is malformed, short, or not finite is a failed run saying which. Timing
 // metrics are not measured (the program's cost is its own).
+// The exit status with which a client's program says "this scene or these parameters are not
+// mine" (docs/clients.md): the run is skipped with the last line of its standard error, not failed.
+inline constexpr int client_declines = 3;
+
 RunResult run_client(const RunSpec& spec, const RunOptions& options, const IsolationLimits& limits);
 
 }  // namespace rotbench

@@ -110,10 +110,13 @@ std::vector<RunResult> Executor::run(const std::vector<RunSpec>& given) {
                 progress.started(item_of[i], fmt::format("{} {} dt={:g}", s.scene, s.scheme, s.dt));
                 results[i] = make(s);
                 if (results[i].interrupted) return;
+                const bool declined = results[i].value(metric::declined) == 1.0;  // a client's "not mine": skipped
                 if (!results[i].failure.empty() && !options_.quiet)
-                    progress.note(
-                        out_, fmt::format("{} {} {} dt={:g} FAILED: {}", s.scene, s.scheme, kind_name(s.kind), s.dt, results[i].failure));
-                progress.finished(item_of[i], !results[i].failure.empty());
+                    progress.note(out_, declined ? fmt::format("skipped: {} {} {} dt={:g}: client {}", s.scene, s.scheme, kind_name(s.kind),
+                                                               s.dt, results[i].failure)
+                                                 : fmt::format("{} {} {} dt={:g} FAILED: {}", s.scene, s.scheme, kind_name(s.kind), s.dt,
+                                                               results[i].failure));
+                progress.finished(item_of[i], !results[i].failure.empty() && !declined);
             });
         for (const auto& phase : phases)  // the tasks of a phase that did not start
             for (std::size_t i : phase)

@@ -204,6 +204,7 @@ WorkerOutput run_program(std::vector<std::string> args, const std::string& direc
     result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     result.cpu_seconds = static_cast<double>(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
                          1e-6 * static_cast<double>(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
+    if (WIFEXITED(status)) result.exit_status = WEXITSTATUS(status);
     if (const auto end = errors.find_last_not_of("\n"); end != std::string::npos) {
         const auto line_break = errors.rfind('\n', end);
         const std::size_t begin = line_break == std::string::npos ? 0 : line_break + 1;

@@ -49,6 +49,7 @@ struct WorkerOutput {
     bool interrupted = false;
     double cpu_seconds = NAN;   // user + system of the process and the children it waited for (wait4)
     double wall_seconds = NAN;  // from its start to its exit
+    int exit_status = -1;       // its exit status when it exited (not killed, not signalled)
 };
 WorkerOutput run_worker(const std::vector<std::string>& verb_arguments, double seconds, std::size_t megabytes);
 // The same for any program (a client's): `args` is its argument vector (the first looked up on

@@ -5,7 +5,8 @@ client's columns, so that its runs must equal the built-in's bit for bit. With a
 misbehaves as a broken code would, for the tests of failed client runs.
 
 usage: rotbench_client.py ROTBENCH SCHEME [FAULT] scene.json trajectory.csv
-FAULT: --garbage, --short, --nan, --hang, --crash, --litter (writes outside its directory's files)
+FAULT: --garbage, --short, --nan, --hang, --crash, --litter (writes outside its directory's files),
+       --decline-torque (declines every scene with a torque: exit 3, docs/clients.md)
 """
 import json
 import os
@@ -21,6 +22,9 @@ spec_path, out_path = args[-2], args[-1]
 with open(spec_path) as f:
     spec = json.load(f)
 
+if fault == "--decline-torque" and spec["torque"]["law"] != "none":
+    print("rotbench_client.py: this client takes no torque", file=sys.stderr)
+    sys.exit(3)
 if fault == "--hang":
     time.sleep(3600)
 if fault == "--crash":
