@@ -150,9 +150,10 @@ def write_model(spec, rotational, translational):
 def run(spec_path, out_path, rotational, translational):
     spec = json.load(open(spec_path))
     if spec["material"]["restitution"] <= 0.0:  # Kratos's Hertz law takes log(e)
-        sys.exit("kratos_granular.py: Kratos DEM 10.4.4 cannot run a restitution coefficient of 0 (its contact search "
-                 "fails within the first second of the small silo); compare the codes at "
-                 "--set silo_discharge.restitution=0.051, as for LIGGGHTS")
+        print("kratos_granular.py: Kratos DEM 10.4.4 cannot run a restitution coefficient of 0 (its contact search "
+              "fails within the first second of the small silo); compare the codes at "
+              "--set silo_discharge.restitution=0.051, as for LIGGGHTS", file=sys.stderr)
+        sys.exit(3)  # declined: these parameters are not Kratos's (docs/clients.md)
     stones, faces, parameters = write_model(spec, rotational, translational)
     import KratosMultiphysics as KM
     from KratosMultiphysics.DEMApplication.DEM_analysis_stage import DEMAnalysisStage

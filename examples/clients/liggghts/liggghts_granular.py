@@ -82,8 +82,9 @@ def main(spec_path, out_path):
     spec = json.load(open(spec_path))
     m, shapes = spec["material"], spec["shapes"]
     if m["restitution"] <= 0.05:
-        sys.exit("liggghts_granular.py: LIGGGHTS 3.8.0 refuses a restitution coefficient at or below 0.05 (this run asks %s); "
-                 "run both codes with --set silo_discharge.restitution=0.051" % g(m["restitution"]))
+        print("liggghts_granular.py: LIGGGHTS 3.8.0 refuses a restitution coefficient at or below 0.05 (this run asks %s); "
+              "run both codes with --set silo_discharge.restitution=0.051" % g(m["restitution"]), file=sys.stderr)
+        sys.exit(3)  # declined: these parameters are not LIGGGHTS's (docs/clients.md)
     frictions = sorted({f["friction"] for stage in spec["walls"] for f in stage["faces"]})
     types = 1 + len(frictions)  # 1: the stones; 2, 3, ...: the walls, by friction
     mu = [[m["friction"]] + frictions] + [[fr] + [0.0] * len(frictions) for fr in frictions]
