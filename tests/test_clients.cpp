@@ -292,6 +292,26 @@ TEST_CASE("clients: a program that exits 3 declines a scene: skipped with its re
     fs::remove_all(dir);
 }
 
+TEST_CASE("clients: compare says when a client's program files changed between two folders") {
+    const fs::path dir = fresh_dir("client_changed");
+    const fs::path file = client_file(dir, "client_versioned", "no_squish");
+    const Cli r = cli({"--client", file.string(), "run", "--scenes", "asymmetric_free", "--schemes", "client_versioned", "--dt", "0.05",
+                       "--quiet", "--out", (dir / "a").string()});
+    REQUIRE(r.status == 0);
+    // Folder b: the same runs, recorded with another hash of the program's files (its adapter edited).
+    fs::copy(dir / "a", dir / "b", fs::copy_options::recursive);
+    auto schemes = nlohmann::json::parse(read(dir / "b" / "schemes.json"));
+    const std::string before = schemes["client_versioned"]["client_files"]["program_hash"];
+    CHECK(before.size() == 16);  // FNV-1a of python3 and the script, hex
+    schemes["client_versioned"]["client_files"]["program_hash"] = "0000000000000000";
+    write(dir / "b" / "schemes.json", schemes.dump());
+    const Cli c = cli({"compare", (dir / "a").string(), (dir / "b").string(), "--cost-tolerance", "100"});
+    INFO(c.out << c.err);
+    CHECK(c.status == 0);  // the same results: no regression, but the reader is told
+    CHECK_THAT(c.out, Catch::Contains("WARNING client client_versioned: its program's files changed (FNV-1a " + before + " -> 0000000000000000)"));
+    fs::remove_all(dir);
+}
+
 TEST_CASE("clients: a gate's same_map_as passes the counterpart's own map and fails another second-order one") {
     const fs::path dir = fresh_dir("client_map_same_map");
     const fs::path same = client_file(dir, "client_map_same", "richardson", "", "claims = \"richardson\"\ncounterpart = \"richardson\"\n");

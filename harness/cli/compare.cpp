@@ -7,12 +7,31 @@
 #include "harness/store/output_files.hpp"
 #include "harness/store/parse.hpp"
 #include "harness/store/results_csv.hpp"
+#include "harness/store/scheme_record.hpp"
 #include "reports/gate_report.hpp"
+
+#include <fmt/format.h>
 
 namespace rotbench {
 namespace {
 
 namespace fs = std::filesystem;
+
+// A client whose program, file or program files differ between the two folders (schemes.json):
+// a change of results may be the code's, not rotbench's, and the reader is told so first.
+std::vector<std::string> client_changes(const SchemeInfos& base, const SchemeInfos& now) {
+    std::vector<std::string> out;
+    for (const auto& [id, b] : base) {
+        const auto n = now.find(id);
+        if (!b.client || n == now.end() || !n->second.client) continue;
+        if (b.source != n->second.source) out.push_back(fmt::format("client {}: its program changed: {} -> {}", id, b.source, n->second.source));
+        else if (b.program_hash != n->second.program_hash)
+            out.push_back(fmt::format("client {}: its program's files changed (FNV-1a {} -> {})", id, b.program_hash, n->second.program_hash));
+        if (b.client_hash != n->second.client_hash)
+            out.push_back(fmt::format("client {}: its client file changed (FNV-1a {} -> {})", id, b.client_hash, n->second.client_hash));
+    }
+    return out;
+}
 
 class CompareVerb final : public Verb {
 public:
@@ -44,7 +63,8 @@ public:
         const Comparison c = compare_runs(base, now, options, base_);
         GateResult result;
         result.verdicts = c.verdicts;
-        result.warnings = c.notes;
+        result.warnings = client_changes(read_schemes(base_), read_schemes(now_));
+        result.warnings.insert(result.warnings.end(), c.notes.begin(), c.notes.end());
         how.out << gate_summary(result);
         if (!junit_.empty()) write_output_file(junit_, gate_junit(result, base_));
         if (!summary_.empty()) write_output_file(summary_, gate_markdown(result, "compare", base_ + " -> " + now_));

@@ -12,6 +12,8 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <cstdlib>
 #include <stdexcept>
 #include <unistd.h>
@@ -147,6 +149,16 @@ std::string load_client(const std::string& path) {
     }
     if (client.program.empty() || client.program.front().empty()) toml_error(path, *program_node, "'program' names no program");
     client.program.front() = executable(path, *program_node, client.program.front());
+    // What the program is made of, so that `compare` can say when it changed: every argument that
+    // names a regular file (an interpreter, an adapter script), its bytes in turn.
+    Fnv1a program_hash;
+    for (const auto& argument : client.program) {
+        std::error_code ec;
+        if (!std::filesystem::is_regular_file(argument, ec)) continue;
+        std::ifstream in(argument, std::ios::binary);
+        program_hash.feed(std::string(std::istreambuf_iterator<char>(in), {}));
+    }
+    client.program_hash = program_hash.hex();
     client.scenes = ids(path, "scenes", *scenes_node, SceneRegistry::instance(), "scene");
     SchemeClaims claims = claims_of(path, *claims_node);
     std::string summary = "client (" + path + ")", notes;

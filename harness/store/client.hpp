@@ -35,6 +35,7 @@ struct LoadedClient {
     std::string path;                  // absolute
     std::string hash;                  // FNV-1a of the file's bytes, hex
     std::vector<std::string> program;  // {dir} replaced
+    std::string program_hash;          // FNV-1a of the files the program names (interpreter, script), hex
     std::vector<std::string> scenes;
     std::string counterpart;           // empty: none
     std::string counterpart_note;      // why it is not the counterpart's map, where it is not

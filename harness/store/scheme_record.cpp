@@ -30,7 +30,8 @@ json to_json(const SchemeInfo& s) {
             {"client", s.client},
             {"counterpart", s.counterpart},
             {"counterpart_note", s.counterpart_note},
-            {"plugin", {{"path", s.plugin_path}, {"hash", s.plugin_hash}, {"build", s.plugin_build}}}};
+            {"plugin", {{"path", s.plugin_path}, {"hash", s.plugin_hash}, {"build", s.plugin_build}}},
+            {"client_files", {{"path", s.client_file}, {"hash", s.client_hash}, {"program_hash", s.program_hash}}}};
 }
 
 // A claimed order: a small whole number (a float, or one past int, would convert with undefined behaviour).
@@ -58,6 +59,8 @@ SchemeInfo from_json(const std::string& id, const json& j) {
     j.at("client").get_to(s.client), j.at("counterpart").get_to(s.counterpart), j.at("counterpart_note").get_to(s.counterpart_note);
     const json& p = j.at("plugin");
     p.at("path").get_to(s.plugin_path), p.at("hash").get_to(s.plugin_hash), p.at("build").get_to(s.plugin_build);
+    const json& f = j.at("client_files");
+    f.at("path").get_to(s.client_file), f.at("hash").get_to(s.client_hash), f.at("program_hash").get_to(s.program_hash);
     return s;
 }
 
@@ -66,7 +69,10 @@ SchemeInfo from_json(const std::string& id, const json& j) {
 SchemeInfo scheme_info(const std::string& id) {
     const auto& e = SchemeRegistry::instance().at(id, "scheme");
     SchemeInfo s{e.id, e.summary, e.source, e.notes, e.extra};
-    if (const LoadedClient* client = client_of(id)) s.client = true, s.counterpart = client->counterpart, s.counterpart_note = client->counterpart_note;
+    if (const LoadedClient* client = client_of(id)) {
+        s.client = true, s.counterpart = client->counterpart, s.counterpart_note = client->counterpart_note;
+        s.client_file = client->path, s.client_hash = client->hash, s.program_hash = client->program_hash;
+    }
     if (const LoadedPlugin* plugin = plugin_of(id)) s.plugin_path = plugin->path, s.plugin_hash = plugin->hash, s.plugin_build = plugin->build;
     return s;
 }

@@ -21,6 +21,7 @@ struct SchemeInfo {
     std::string counterpart;       // a client's: the built-in scheme it should equal (empty: none)
     std::string counterpart_note;  // why it is not that scheme's map, where it is not
     std::string plugin_path, plugin_hash, plugin_build;  // a plug-in's (harness/store/plugin.hpp); empty otherwise
+    std::string client_file, client_hash, program_hash;  // a client's file, its hash and its program's files' hash
 };
 using SchemeInfos = std::map<std::string, SchemeInfo>;
 
