@@ -8,6 +8,7 @@
 #include "harness/store/csv.hpp"
 #include "harness/store/output_files.hpp"
 #include "harness/store/plugin.hpp"
+#include "harness/store/program_path.hpp"
 #include "harness/store/run_record.hpp"
 #include "harness/scenes/scene.hpp"
 
@@ -103,13 +104,7 @@ WorkerOutput run_program(std::vector<std::string> args, const std::string& direc
     // Everything the child needs is built before fork: after it, only chdir and exec.
     if (args.empty() || args.front().empty()) return fail("no program to start");
     if (args.front().find('/') == std::string::npos) {  // looked up on PATH here, as execvp would
-        std::string found;
-        const char* path = std::getenv("PATH");
-        for (const auto& folder : split_on(path ? path : "", ':'))
-            if (!folder.empty() && ::access((folder + "/" + args.front()).c_str(), X_OK) == 0) {
-                found = folder + "/" + args.front();
-                break;
-            }
+        const std::string found = find_on_path(args.front());
         if (found.empty()) return fail("its " + what + " '" + args.front() + "' is not found on PATH");
         args.front() = found;
     }
