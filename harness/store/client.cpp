@@ -4,6 +4,7 @@
 #include "harness/scenes/scene.hpp"
 #include "harness/store/output_files.hpp"
 #include "harness/store/plugin.hpp"
+#include "harness/store/program_path.hpp"
 #include "harness/store/toml_input.hpp"
 #include "schemes/scheme.hpp"
 
@@ -12,9 +13,6 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
-#include <cstdlib>
 #include <stdexcept>
 #include <unistd.h>
 
@@ -109,15 +107,8 @@ static std::string executable(const std::string& path, const toml::node& where, 
                                         (std::filesystem::exists(absolute) ? "not an executable file" : "no such file"));
         return absolute;
     }
-    const char* search = std::getenv("PATH");
-    std::string dirs = search ? search : "";
-    for (std::size_t from = 0; from <= dirs.size();) {
-        const std::size_t colon = std::min(dirs.find(':', from), dirs.size());
-        const std::filesystem::path candidate = std::filesystem::path(dirs.substr(from, colon - from)) / program;
-        if (colon > from && ::access(candidate.c_str(), X_OK) == 0 && !std::filesystem::is_directory(candidate)) return program;
-        from = colon + 1;
-    }
-    toml_error(path, where, "program '" + program + "' is not found on PATH");
+    if (find_on_path(program).empty()) toml_error(path, where, "program '" + program + "' is not found on PATH");
+    return program;
 }
 
 std::string load_client(const std::string& path) {
@@ -152,12 +143,8 @@ std::string load_client(const std::string& path) {
     // What the program is made of, so that `compare` can say when it changed: every argument that
     // names a regular file (an interpreter, an adapter script), its bytes in turn.
     Fnv1a program_hash;
-    for (const auto& argument : client.program) {
-        std::error_code ec;
-        if (!std::filesystem::is_regular_file(argument, ec)) continue;
-        std::ifstream in(argument, std::ios::binary);
-        program_hash.feed(std::string(std::istreambuf_iterator<char>(in), {}));
-    }
+    for (const auto& argument : client.program)
+        if (const auto bytes = read_file(argument)) program_hash.feed(*bytes);  // regular files only
     client.program_hash = program_hash.hex();
     client.scenes = ids(path, "scenes", *scenes_node, SceneRegistry::instance(), "scene");
     SchemeClaims claims = claims_of(path, *claims_node);
