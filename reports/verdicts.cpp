@@ -63,13 +63,18 @@ std::string stability_cell(const SchemeVerdict& v) {
     return (v.stability_weak.empty() ? r : r + " (weak: " + v.stability_weak + ")") + not_measured;
 }
 
+// The scheme's CPU time per step, NaN when it was not timed (a client) or has no verdict.
+double ns_per_step_of(const std::string& id, const std::vector<SchemeVerdict>& verdicts) {
+    const auto v = std::find_if(verdicts.begin(), verdicts.end(), [&](const SchemeVerdict& x) { return x.scheme == id; });
+    return v == verdicts.end() ? NAN : v->ns_per_step;
+}
+
 std::string code_list(const std::vector<std::string>& ids, const std::vector<SchemeVerdict>& verdicts) {
     std::string out;
     for (std::size_t i = 0; i < ids.size(); ++i) {
-        const auto v = std::find_if(verdicts.begin(), verdicts.end(), [&](const SchemeVerdict& x) { return x.scheme == ids[i]; });
+        const double ns = ns_per_step_of(ids[i], verdicts);
         out += (i == 0 ? "" : i + 1 == ids.size() ? " and " : ", ") + fmt::format("`{}`", ids[i]);
-        if (v != verdicts.end() && std::isfinite(v->ns_per_step)) out += fmt::format(" ({:.0f} ns/step)", v->ns_per_step);
-        else out += " (not timed)";
+        out += std::isfinite(ns) ? fmt::format(" ({:.0f} ns/step)", ns) : " (not timed)";
     }
     return out;
 }
@@ -111,8 +116,8 @@ std::string verdict_section(const ResultSet& set, const std::vector<SchemeVerdic
                                                                      : "—",
                           claims_cell(v));
     for (const auto& r : set.declined)  // a client's "not mine": skipped, said, in no table
-        md += fmt::format("\n- Skipped: client `{}` declined `{}` at dt = {:g} ({} run): {}", r.spec.scheme, r.spec.scene, r.spec.dt,
-                          kind_name(r.spec.kind), r.failure.size() > 10 ? r.failure.substr(10) : "no reason given");
+        md += fmt::format("\n- Skipped: client `{}` on `{}` at dt = {:g} ({} run), {}", r.spec.scheme, r.spec.scene, r.spec.dt,
+                          kind_name(r.spec.kind), r.failure);
     if (!set.declined.empty()) md += "\n";
     if (!has_stability)
         md += "\nNo stability study in this directory: `rotbench stability --out DIR` writes one beside the runs, and "
@@ -127,10 +132,8 @@ std::string recommendation_section(const SchemeChoice& rec, const std::vector<Sc
                           "(or kept) over {:g} times a scene's duration; cheapest first (the verdicts below say why).\n",
                           code_list(rec.use, verdicts), energy_horizon);
     if (!rec.short_runs.empty()) {
-        const bool all_timed = std::all_of(rec.short_runs.begin(), rec.short_runs.end(), [&](const std::string& id) {
-            const auto v = std::find_if(verdicts.begin(), verdicts.end(), [&](const SchemeVerdict& x) { return x.scheme == id; });
-            return v != verdicts.end() && std::isfinite(v->ns_per_step);
-        });
+        const bool all_timed = std::all_of(rec.short_runs.begin(), rec.short_runs.end(),
+                                           [&](const std::string& id) { return std::isfinite(ns_per_step_of(id, verdicts)); });
         md += fmt::format("- **For short runs** {}: second order and the momentum kept, but their energy drifts secularly; {}"
                           "accurate until the drift matters.\n",
                           code_list(rec.short_runs, verdicts), all_timed ? "cheap, and " : "");

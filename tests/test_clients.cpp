@@ -276,7 +276,7 @@ TEST_CASE("clients: a program that exits 3 declines a scene: skipped with its re
                                       "this client takes no torque"));
     CHECK(r.out.find("FAILED") == std::string::npos);
     const std::string md = read(dir / "out" / "report.md");
-    CHECK_THAT(md, Catch::Contains("- Skipped: client `client_decliner` declined `dipole_top` at dt = 0.01 (trajectory run): "
+    CHECK_THAT(md, Catch::Contains("- Skipped: client `client_decliner` on `dipole_top` at dt = 0.01 (trajectory run), declined: "
                                    "rotbench_client.py: this client takes no torque"));
     CHECK_THAT(md, Catch::Contains(", 0 of them unstable or failed"));  // the declined runs are in no table
     const std::string orders = read(dir / "out" / "orders.csv");

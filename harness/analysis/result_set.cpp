@@ -26,7 +26,7 @@ ResultSet describe(std::vector<RunResult> runs, const SchemeInfos& recorded) {
     set.schemes = describe_schemes(schemes, recorded);
     for (auto& r : runs) {
         if (!set.scenes.count(r.spec.scene)) set.scenes[r.spec.scene] = scene_info(*make_scene(r.spec.scene, r.spec.params));
-        (r.value(metric::declined) == 1.0 ? set.declined : r.spec.kind == RunKind::horizon ? set.horizons : set.runs).push_back(std::move(r));
+        (r.declined() ? set.declined : r.spec.kind == RunKind::horizon ? set.horizons : set.runs).push_back(std::move(r));
     }
     return set;
 }

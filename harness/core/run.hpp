@@ -62,6 +62,8 @@ struct RunResult {
 
     bool has(std::string_view name) const;
     bool has_energy_series() const { return is_energy_series(series_columns); }
+    // A client's program declined the run (docs/clients.md): skipped, not failed.
+    bool declined() const { return value(metric::declined) == 1.0; }
     // An energy series' columns (t, energy_error, ...), not a granular curve's.
     static bool is_energy_series(const std::vector<std::string>& columns) { return columns.size() >= 2 && columns[1] == "energy_error"; }
     double value(std::string_view name) const;  // NaN when absent

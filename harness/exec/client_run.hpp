@@ -17,6 +17,10 @@ namespace rotbench {
 // same orientation) and the world angular velocity, one row at every step t = k dt, k = 0 ... N.
 inline constexpr const char* client_trajectory_header = "t,qw,qx,qy,qz,wx,wy,wz";
 
+// The exit status with which a client's program says "this scene or these parameters are not
+// mine" (docs/clients.md): the run is skipped with the last line of its standard error, not failed.
+inline constexpr int client_declines = 3;
+
 // The scene's spec as a client reads it, for a run of `steps` steps of `dt` (t_end = steps dt,
 // to within round-off). InputError when the scene is not one body under a TorqueLaw.
 std::string client_scene_json(const Scene& scene, const RunSpec& spec, double t_end, std::int64_t steps);
@@ -24,12 +28,9 @@ std::string client_scene_json(const Scene& scene, const RunSpec& spec, double t_
 // Runs of kind trajectory and horizon (on a granular scene, trajectory only: the program runs the
 // scene itself and writes samples of its stones, harness/exec/granular_client.hpp); any other
 // kind, a scene the client file does not list, a program that fails, hangs or writes a
-// trajectory that is malformed, short, or not finite is a failed run saying which. Timing
-// metrics are not measured (the program's cost is its own).
-// The exit status with which a client's program says "this scene or these parameters are not
-// mine" (docs/clients.md): the run is skipped with the last line of its standard error, not failed.
-inline constexpr int client_declines = 3;
-
+// trajectory that is malformed, short, or not finite is a failed run saying which; one that exits
+// with client_declines declined it. The built-ins' timing metrics are not measured: every run
+// records its program's own CPU and wall time instead.
 RunResult run_client(const RunSpec& spec, const RunOptions& options, const IsolationLimits& limits);
 
 }  // namespace rotbench

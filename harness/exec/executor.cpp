@@ -110,7 +110,7 @@ std::vector<RunResult> Executor::run(const std::vector<RunSpec>& given) {
                 progress.started(item_of[i], fmt::format("{} {} dt={:g}", s.scene, s.scheme, s.dt));
                 results[i] = make(s);
                 if (results[i].interrupted) return;
-                const bool declined = results[i].value(metric::declined) == 1.0;  // a client's "not mine": skipped
+                const bool declined = results[i].declined();  // a client's "not mine": skipped
                 if (!results[i].failure.empty() && !options_.quiet)
                     progress.note(out_, declined ? fmt::format("skipped: {} {} {} dt={:g}: client {}", s.scene, s.scheme, kind_name(s.kind),
                                                                s.dt, results[i].failure)

@@ -106,7 +106,7 @@ GateResult judge_gate(const GateFile& file, const GatePlan& plan, std::vector<Ru
             else if (std::isfinite(wall)) v.seconds += wall;
         }
         // A client that declined a run of the case ("not mine", docs/clients.md): skipped with a warning, as an unlisted scene is.
-        if (const auto d = std::find_if(used.begin(), used.end(), [](const RunResult* r) { return r->value(metric::declined) == 1.0; });
+        if (const auto d = std::find_if(used.begin(), used.end(), [](const RunResult* r) { return r->declined(); });
             d != used.end()) {
             const std::string w = fmt::format("client {} declined scene {} ({}): not judged there", c.scheme, c.scene, (*d)->failure);
             if (std::find(result.warnings.begin(), result.warnings.end(), w) == result.warnings.end()) result.warnings.push_back(w);
