@@ -24,7 +24,6 @@ std::string change_text(double change) {
     return fmt::format("{:+.1f} %", 100 * change);
 }
 
-
 // Whether a run was timed does not change what it computes: a timed and an untimed run match.
 RunSpec key_of(RunSpec s) {
     s.timed = true;

@@ -37,8 +37,7 @@ if spec["format"].startswith("rotbench-granular-scene"):  # a whole granular sce
     sys.dont_write_bytecode = True  # no __pycache__ beside the adapter: nothing left outside the scratch folder
     sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
     from kratos_granular import run  # noqa: E402
-    run(spec_path, out_path, rotational, translational)
-    sys.exit(0)
+    run(spec_path, out_path, rotational, translational)  # leaves the process itself (os._exit)
 law = spec["torque"]
 if law["law"] not in ("none", "body_constant", "dipole"):
     sys.exit("kratos_dem.py: no torque law '%s' here" % law["law"])

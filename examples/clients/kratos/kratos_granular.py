@@ -28,6 +28,10 @@ def g(v):
     return repr(float(v))
 
 
+def reach(shape):  # the largest distance of the shape's surface from its centre of mass (m)
+    return max(math.sqrt(sum(c * c for c in s[:3])) + s[3] for s in shape["spheres"])
+
+
 def random_quaternion(rng):  # uniform on the unit sphere of quaternions (Shoemake), w first
     u1, u2, u3 = rng.random(), rng.random(), rng.random()
     a, b = math.sqrt(1 - u1), math.sqrt(u1)
@@ -38,13 +42,13 @@ def random_quaternion(rng):  # uniform on the unit sphere of quaternions (Shoema
 def packing(spec):  # [(shape, position, q)] on a lattice of the largest shape's bounding diameter
     stones, shapes = spec["stones"], spec["shapes"]
     rng = random.Random(stones["seed"])
-    reach = max(math.sqrt(sum(c * c for c in s[:3])) + s[3] for sh in shapes for s in sh["spheres"])
+    largest = max(reach(sh) for sh in shapes)
     lo, hi = stones["box"]
-    pitch = 2.0 * reach * 1.01
-    counts = [max(1, int((hi[i] - lo[i] - 2 * reach) / pitch) + 1) for i in range(3)]
+    pitch = 2.0 * largest * 1.01
+    counts = [max(1, int((hi[i] - lo[i] - 2 * largest) / pitch) + 1) for i in range(3)]
     while counts[0] * counts[1] * counts[2] < stones["count"]:
         counts[2] += 1  # upwards: the walls stand 1 m above the box (the domain's spare)
-    sites = [[lo[0] + reach + i * pitch, lo[1] + reach + j * pitch, lo[2] + reach + k * pitch]
+    sites = [[lo[0] + largest + i * pitch, lo[1] + largest + j * pitch, lo[2] + largest + k * pitch]
              for k in range(counts[2]) for j in range(counts[1]) for i in range(counts[0])]
     rng.shuffle(sites)
     sites = sorted(sites[:stones["count"]], key=lambda p: (p[2], p[1], p[0]))
@@ -55,7 +59,7 @@ def write_model(spec, rotational, translational):
     m, shapes, stages = spec["material"], spec["shapes"], spec["walls"]
     stones = packing(spec)
     for k, sh in enumerate(shapes):
-        extent = 2 * max(math.sqrt(sum(c * c for c in s[:3])) + s[3] for s in sh["spheres"])
+        extent = 2 * reach(sh)
         with open("shape%d.clu" % k, "w") as f:
             f.write("Name\nshape%d\n\nBegin centers_and_radii\n" % k)
             for s in sh["spheres"]:
@@ -73,7 +77,7 @@ def write_model(spec, rotational, translational):
         f.write("".join("%d %d %d\n" % (n + 1, k + 1, n + 1) for n, (k, _, _) in enumerate(stones)) + "End Elements\n")
         f.write("\nBegin NodalData CHARACTERISTIC_LENGTH\n")
         for n, (k, _, _) in enumerate(stones):
-            f.write("%d 0 %s\n" % (n + 1, g(2 * max(math.sqrt(sum(c * c for c in s[:3])) + s[3] for s in shapes[k]["spheres"]))))
+            f.write("%d 0 %s\n" % (n + 1, g(2 * reach(shapes[k]))))  # the cluster file's Size: scale 1
         f.write("End NodalData\n\nBegin NodalData ORIENTATION\n")
         f.write("".join("%d 0 [4] (%s, %s, %s, %s)\n" % (n + 1, g(q[1]), g(q[2]), g(q[3]), g(q[0]))
                         for n, (_, _, q) in enumerate(stones)) + "End NodalData\n")
