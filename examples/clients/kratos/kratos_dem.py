@@ -29,8 +29,8 @@ TRANSLATIONAL = ("Velocity_Verlet", "Symplectic_Euler")
 rotational, translational, spec_path, out_path = sys.argv[1:5]
 if rotational not in ROTATIONAL or translational not in TRANSLATIONAL:
     sys.exit("kratos_dem.py: unknown scheme pair %s / %s" % (rotational, translational))
-# One thread: a single body has nothing to share, and two OpenMP threads spinning on a busy machine
-# made a step 15 times slower (43 s against 2.8 s for 5,000 steps); a silo is timed per core.
+# One thread: a single body has nothing to share, OpenMP threads spinning on a busy machine slow a
+# step many times over (docs/clients.md), and a silo is timed per core.
 os.environ["OMP_NUM_THREADS"] = "1"
 spec = json.load(open(spec_path))
 if spec["format"].startswith("rotbench-granular-scene"):  # a whole granular scene: its own module
