@@ -3,6 +3,7 @@
 // than a radian.
 #include "benchmarks/random_bodies.hpp"
 #include "schemes/scheme.hpp"
+#include "tests/skip.hpp"
 
 #include <catch2/catch.hpp>
 #include <algorithm>
@@ -52,10 +53,7 @@ std::pair<double, double> batch_minus_alone(const std::string& id, double dt, in
 }  // namespace
 
 TEST_CASE("every registered scheme steps packs of bodies") {
-    if (!ROTBENCH_SIMD) {
-        WARN("built without AVX2: there are no packs, every body takes the double code");
-        return;
-    }
+    if (!ROTBENCH_SIMD) ROTBENCH_SKIP("built without AVX2: there are no packs, every body takes the double code");
     for (const auto& id : SchemeRegistry::instance().ids()) {
         INFO(id);
         CHECK(SchemeRegistry::instance().at(id, "scheme").make()->lanes() == pack_size);

@@ -4,6 +4,7 @@
 #include "harness/gate/gate.hpp"
 #include "reports/gate_report.hpp"
 #include "tests/cli_helpers.hpp"
+#include "tests/misbehaving_schemes.hpp"
 
 #include <algorithm>
 #include "schemes/plugin_abi.hpp"

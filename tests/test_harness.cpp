@@ -3,6 +3,7 @@
 #include "harness/analysis/sweep_plan.hpp"
 #include "harness/exec/reference.hpp"
 #include "tests/cli_helpers.hpp"
+#include "tests/misbehaving_schemes.hpp"
 #include "schemes/quaternion.hpp"
 
 #include <catch2/catch.hpp>
@@ -17,39 +18,6 @@ using namespace rotbench;
 namespace fs = std::filesystem;
 
 namespace {
-
-// Test-only schemes that misbehave on purpose: the harness must contain them. Templates on
-// the scalar like every scheme, so that they step packs too.
-template <class S = double>
-struct ProducesNan {
-    template <class T>
-    using rebind = ProducesNan<T>;
-    struct Memory {};
-    static void start(const RigidBodyT<S>&, Memory&) {}
-    static void predict(RigidBodyT<S>& b, Memory&, double) { b.omega.x() = S(std::numeric_limits<double>::quiet_NaN()); }
-    static void correct(RigidBodyT<S>&, Memory&, double) {}
-};
-template <class S = double>
-struct Throws {
-    template <class T>
-    using rebind = Throws<T>;
-    struct Memory {};
-    static void start(const RigidBodyT<S>&, Memory&) {}
-    static void predict(RigidBodyT<S>&, Memory&, double) { throw std::runtime_error("plug-in bug"); }
-    static void correct(RigidBodyT<S>&, Memory&, double) {}
-};
-template <class S = double>
-struct Explodes {  // doubles w every step: finite for a long time, but no energy bound holds
-    template <class T>
-    using rebind = Explodes<T>;
-    struct Memory {};
-    static void start(const RigidBodyT<S>&, Memory&) {}
-    static void predict(RigidBodyT<S>& b, Memory&, double) { b.omega *= 2.0; }
-    static void correct(RigidBodyT<S>&, Memory&, double) {}
-};
-const RegisterScheme<ProducesNan<>> nan_scheme("test_nan", "test only: writes NaN", "tests", "", {.sound = false});
-const RegisterScheme<Throws<>> throwing_scheme("test_throws", "test only: throws", "tests", "", {.sound = false});
-const RegisterScheme<Explodes<>> exploding_scheme("test_explodes", "test only: w doubles each step", "tests", "", {.sound = false});
 
 const std::vector<std::string> seed_schemes = {"direct", "munjiza_rk4", "zvw", "zvw_corrected"};
 
