@@ -36,6 +36,23 @@ function(rotbench_layer target)
   add_library(${target} OBJECT ${sources})
   target_include_directories(${target} PUBLIC ${ROTBENCH_LAYERS_DIR}/${ARG_TREE})
   target_link_libraries(${target} PUBLIC ${ARG_LINKS})
+  # An include that climbs ("../x.hpp") is found beside the file, past the include trees: the
+  # build refuses it (cmake/include_walls.cmake), as the compiler refuses an absolute one.
+  set(files)
+  set(scanned ${ARG_FOLDERS} ${ARG_SOURCES_IN})
+  list(REMOVE_DUPLICATES scanned)
+  foreach(folder IN LISTS scanned)
+    file(GLOB found CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/${folder}/*.cpp ${CMAKE_SOURCE_DIR}/${folder}/*.hpp
+         ${CMAKE_SOURCE_DIR}/${folder}/*.ipp)
+    list(APPEND files ${found})
+  endforeach()
+  set(stamp ${ROTBENCH_LAYERS_DIR}/${ARG_TREE}.walls)
+  add_custom_command(OUTPUT ${stamp}
+    COMMAND ${CMAKE_COMMAND} -DSOURCE_DIR=${CMAKE_SOURCE_DIR} "-DFILES=${files}" -DSTAMP=${stamp}
+            -P ${CMAKE_SOURCE_DIR}/cmake/include_walls.cmake
+    DEPENDS ${files} ${CMAKE_SOURCE_DIR}/cmake/include_walls.cmake VERBATIM)
+  add_custom_target(${target}_walls DEPENDS ${stamp})
+  add_dependencies(${target} ${target}_walls)
 endfunction()
 
 # Object files are linked only into targets that link their library directly (CMake's rule
