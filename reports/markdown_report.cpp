@@ -12,6 +12,7 @@
 #include "references/odeint_reference.hpp"
 #include "reports/convergence_plots.hpp"
 #include "reports/energy_series.hpp"
+#include "harness/analysis/claims.hpp"
 #include "harness/analysis/expected_orders.hpp"
 #include "harness/analysis/orders.hpp"
 #include "reports/answer.hpp"
@@ -105,12 +106,10 @@ void scene_section(std::string& md, const SceneInfo& entry, const ResultSet& set
     if (!entry.notes.empty()) md += entry.notes + "\n\n";
     md += convergence_plots(scene_id, runs, set, dir, best);
 
-    // Observed orders of each fitted metric, with the expected one where theory gives it.
-    // Expected orders are known for torque-free scenes and orientation-dependent torques; a
-    // torque fixed in the body (torqued_cylinder) is a third case, left without a claim.
-    const bool expectation =
-        entry.reference != Scene::ReferenceKind::none && (entry.conserves_angular_momentum || entry.torque_depends_on_orientation);
-    const bool torque = entry.torque_depends_on_orientation;
+    // Observed orders of each fitted metric, with the expected one on the scenes that judge a
+    // claim (claims.hpp); a torque fixed in the body (torqued_cylinder) is left without one.
+    const bool torque = judges_claims(entry, true);
+    const bool expectation = torque || judges_claims(entry, false);
     const auto metrics = present(fitted_metrics(), runs);
     std::vector<std::string> order_columns = {"expected"};
     for (const auto& m : metrics) order_columns.push_back("order of " + m);

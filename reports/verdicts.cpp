@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 namespace rotbench {
 namespace {
@@ -128,13 +129,15 @@ std::string verdict_section(const ResultSet& set, const std::vector<SchemeVerdic
 std::string recommendation_section(const SchemeChoice& rec, const std::vector<SchemeVerdict>& verdicts) {
     std::string md = "## Recommendation\n\n";
     if (!rec.use.empty())
-        md += fmt::format("- **Use** {}: second order with and without torque, the angular momentum kept and the energy bounded "
-                          "(or kept) over {:g} times a scene's duration; cheapest first (the verdicts below say why).\n",
+        md += fmt::format("- **Use** {}: second order with and without torque as claimed, every claim met as the gate judges it, "
+                          "the angular momentum kept and the energy bounded (or kept) over {:g} times a scene's duration; cheapest "
+                          "first (the verdicts below say why).\n",
                           code_list(rec.use, verdicts), energy_horizon);
     if (!rec.short_runs.empty()) {
         const bool all_timed = std::all_of(rec.short_runs.begin(), rec.short_runs.end(),
                                            [&](const std::string& id) { return std::isfinite(ns_per_step_of(id, verdicts)); });
-        md += fmt::format("- **For short runs** {}: second order and the momentum kept, but their energy drifts secularly; {}"
+        md += fmt::format("- **For short runs** {}: second order as claimed, every claim met and the momentum kept, but their energy "
+                          "drifts secularly; {}"
                           "accurate until the drift matters.\n",
                           code_list(rec.short_runs, verdicts), all_timed ? "cheap, and " : "");
     }
@@ -144,6 +147,10 @@ std::string recommendation_section(const SchemeChoice& rec, const std::vector<Sc
             md += fmt::format("{} `{}` ({})", i ? ";" : "", rec.avoid[i].first, rec.avoid[i].second);
         md += ".\n";
     }
+    if (!rec.unjudged.empty())
+        md += fmt::format("- **Not judged here** {}: none of the scenes that judge a claim ran ({} without torque, {} with one).\n",
+                          code_list(rec.unjudged, verdicts), fmt::join(default_claim_scenes(false), ", "),
+                          fmt::join(default_claim_scenes(true), ", "));
     if (!rec.peng_unsafe.empty()) {
         md += "- **Peng's step is unsafe once contacts are damped**, for every scheme:";
         for (std::size_t i = 0; i < rec.peng_unsafe.size(); ++i) {

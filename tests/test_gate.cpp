@@ -92,6 +92,18 @@ TEST_CASE("the q^n-frame Fincham leapfrog fails the default gate on its order cl
     CHECK(r.status == 1);
     CHECK_THAT(r.out, Catch::Contains("FAIL asymmetric_free/fincham_qn_frame: fincham_qn_frame: order_without_torque"));
     CHECK_THAT(r.out, Catch::Contains("FAIL dipole_top/fincham_qn_frame: fincham_qn_frame: order_with_torque"));
+    SECTION("and the report of a run of it names the same claims and does not recommend it") {
+        const fs::path dir = fresh_dir("gate_report_agree");
+        const Cli run = binary({"--plugin", PLUGIN_QN_FRAME_FINCHAM, "run", "--scenes", "asymmetric_free,tumbling_brick,dipole_top",
+                                "--schemes", "fincham_qn_frame", "--out", dir.string()});
+        REQUIRE(run.status == 0);
+        const std::string report = read(dir / "report.md");
+        CHECK_THAT(report, Catch::Contains("fails its claims: order_without_torque on asymmetric_free, order_with_torque on "
+                                           "dipole_top, order_without_torque on tumbling_brick"));
+        CHECK_THAT(report, !Catch::Contains("**Use**"));
+        CHECK_THAT(report, !Catch::Contains("**For short runs**"));
+        fs::remove_all(dir);
+    }
 }
 
 TEST_CASE("a plug-in that claims nothing gets the generic sanity checks and a warning") {

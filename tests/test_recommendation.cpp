@@ -1,5 +1,5 @@
-// The report's recommendation: each rule drives a scheme into "use", "for short runs" or "avoid",
-// and Peng's step is flagged only where no sound scheme reaches it.
+// The report's recommendation: each rule drives a scheme into "use", "for short runs", "avoid" or
+// "not judged here", and Peng's step is flagged only where no sound scheme reaches it.
 #include "harness/analysis/scheme_verdicts.hpp"
 
 #include <catch2/catch.hpp>
@@ -8,17 +8,20 @@ using namespace rotbench;
 
 namespace {
 
-OrderVerdict fitted(double lo, double hi) {
+OrderVerdict claimed(int order, double lo, double hi) {
     OrderVerdict v;
+    v.claimed = std::to_string(order), v.claimed_order = order;
     v.fitted = 2, v.lo = lo, v.hi = hi;
     return v;
 }
 
-// A scheme that holds everything a user could ask: second order, momentum kept, energy bounded.
+// A scheme that holds everything a user could ask: claims second order and meets its claims,
+// momentum kept, energy bounded.
 SchemeVerdict sound(const std::string& id, double ns) {
     SchemeVerdict v;
-    v.scheme = id, v.free = fitted(1.98, 2.01), v.torque = fitted(2.0, 2.0), v.momentum_runs = 4, v.momentum_kept = true;
+    v.scheme = id, v.free = claimed(2, 1.98, 2.01), v.torque = claimed(2, 2.0, 2.0), v.momentum_runs = 4, v.momentum_kept = true;
     v.energy = EnergyVerdict::bounded, v.stability_lo = 0.4, v.stability_hi = 1.4, v.ns_per_step = ns;
+    v.claims_anything = true, v.claims_judged = 5;
     return v;
 }
 
@@ -41,23 +44,28 @@ TEST_CASE("recommendation: a scheme holding every claim is used, cheapest first,
     auto drifting = sound("drifts", 50);
     drifting.energy = EnergyVerdict::drifting;
     auto first_order = sound("first", 40);
-    first_order.torque = fitted(0.99, 1.01);
+    first_order.torque = claimed(1, 0.99, 1.01);
     auto leaky = sound("leaky", 40);
     leaky.momentum_kept = false, leaky.momentum_worst = 5e-3;
     auto weak = sound("weak", 40);
     weak.stability_lo = 0.004, weak.stability_weak = "sphere_pair ζ = 0";
-    auto plateau = sound("plateau", 45);  // exact, but its error stops falling at 1.2e-9 on one scene: round-off
-    plateau.free.fitted = 0, plateau.free.exact = 4, plateau.free.no_convergence = 1, plateau.free.stuck_lo = plateau.free.stuck_hi = 1.2e-9;
-    auto stuck = sound("stuck", 45);  // an error that stops falling at 1e-3: not converging
-    stuck.free.no_convergence = 1, stuck.free.stuck_lo = stuck.free.stuck_hi = 1e-3;
+    auto exact = sound("exact", 45);  // exact without torque: second order or better there
+    exact.free.claimed = "exact", exact.free.claimed_order = 0, exact.free.fitted = 0, exact.free.exact = 2;
+    // Claims 2 and shows 2.4 on a claim scene: above the lowest order the user asks, but its claim
+    // fails as the gate judges it (|2.4 - 2| > order_tolerance), so it is not recommended.
+    auto overshoots = sound("overshoots", 20);
+    overshoots.free = claimed(2, 2.4, 2.4), overshoots.claims_failed = {"order_without_torque on asymmetric_free"};
+    auto unjudged = sound("unjudged", 10);  // none of the claim scenes ran
+    unjudged.claims_judged = 0;
     auto control = sound("control", 30);
     control.control = true;
-    for (const auto& x : {drifting, first_order, leaky, weak, control, plateau, stuck}) v.push_back(x);
+    for (const auto& x : {drifting, first_order, leaky, weak, control, exact, overshoots, unjudged}) v.push_back(x);
     const SchemeChoice r = recommend(v, {});
-    CHECK(r.use == std::vector<std::string>{"plateau", "a", "b"});
-    CHECK(avoided(r, "stuck", "no second order without torque"));
+    CHECK(r.use == std::vector<std::string>{"exact", "a", "b"});
     CHECK(r.short_runs == std::vector<std::string>{"drifts"});
-    CHECK(avoided(r, "first", "order 0.99 under an orientation-dependent torque"));
+    CHECK(r.unjudged == std::vector<std::string>{"unjudged"});
+    CHECK(avoided(r, "overshoots", "fails its claims: order_without_torque on asymmetric_free"));
+    CHECK(avoided(r, "first", "order 1 under an orientation-dependent torque"));
     CHECK(avoided(r, "leaky", "loses angular momentum without torque (up to 5.0e-03)"));
     CHECK(avoided(r, "weak", "stable only to 0.004 of Peng's step on sphere_pair ζ = 0"));
     CHECK(avoided(r, "control", "a deliberately wrong control"));

@@ -69,15 +69,12 @@ Judgement bounded_energy(double early, double late, const std::string& where) {
 
 }  // namespace
 
-bool judged_without_torque(const SceneInfo& scene) {
-    return scene.reference != Scene::ReferenceKind::none && scene.conserves_angular_momentum;
+bool judges_claims(const SceneInfo& scene, bool with_torque) {
+    if (scene.reference == Scene::ReferenceKind::none) return false;
+    return with_torque ? scene.torque_depends_on_orientation && scene.conserves_energy : scene.conserves_angular_momentum;
 }
 
-bool judged_with_torque(const SceneInfo& scene) {
-    return scene.reference != Scene::ReferenceKind::none && scene.torque_depends_on_orientation;
-}
-
-bool judges_energy(const SceneInfo& scene) { return scene.conserves_energy && (judged_without_torque(scene) || judged_with_torque(scene)); }
+bool judges_energy(const SceneInfo& scene) { return scene.conserves_energy && (judges_claims(scene, false) || judges_claims(scene, true)); }
 
 RunSpec horizon_run(const RunSpec& coarsest) {
     RunSpec spec = coarsest;

@@ -25,11 +25,12 @@ struct Judgement {
     std::string message;
 };
 
-// The scenes a scheme's claims are judged on: those with a reference, torque-free (the angular
-// momentum conserved) or under an orientation-dependent torque; and of those, the ones whose
-// true motion conserves energy, for bounded energy.
-bool judged_without_torque(const SceneInfo& scene);
-bool judged_with_torque(const SceneInfo& scene);
+// The one rule for the scenes that can judge a scheme's claims of one kind (the gate's
+// [claims] lists, the report's verdicts and its expected orders all ask it): a reference, and
+// either no torque (the angular momentum conserved) or an orientation-dependent torque whose
+// true motion conserves energy (bounded energy is judged there too).
+bool judges_claims(const SceneInfo& scene, bool with_torque);
+// Of every scene, those whose true motion conserves energy, for bounded energy.
 bool judges_energy(const SceneInfo& scene);
 // Of those, the ones the report judges a scheme's claims on, as the default gate does (its
 // [claims] lists the same scenes; tests/test_claims.cpp keeps the two equal): the free top and

@@ -6,12 +6,11 @@
 
 #include <algorithm>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <map>
 
 namespace rotbench {
 namespace {
-
-bool judged_scene(const SceneInfo& s, bool with_torque) { return with_torque ? judged_with_torque(s) : judged_without_torque(s); }
 
 // omega_err_max over |w_ref| at the scheme's finest stable step on a scene: near 1 when the
 // error has saturated, near round-off when it is round-off that does not converge.
@@ -32,7 +31,7 @@ OrderVerdict order_verdict(const ResultSet& set, const std::vector<OrderRow>& or
         else if (v.claimed_order > 0) v.claimed = std::to_string(v.claimed_order);
     }
     for (const auto& o : orders) {
-        if (o.scheme != scheme || o.metric != metric::omega_err_max || !judged_scene(set.scene(o.scene), with_torque)) continue;
+        if (o.scheme != scheme || o.metric != metric::omega_err_max || !judges_claims(set.scene(o.scene), with_torque)) continue;
         switch (o.status) {
             case OrderStatus::fit:
                 ++v.fitted;
@@ -57,7 +56,7 @@ OrderVerdict order_verdict(const ResultSet& set, const std::vector<OrderRow>& or
 void momentum_verdict(const ResultSet& set, SchemeVerdict& v) {
     RunRefs runs;
     for (const auto& r : set.runs)
-        if (r.spec.scheme == v.scheme && r.failure.empty() && judged_scene(set.scene(r.spec.scene), false) &&
+        if (r.spec.scheme == v.scheme && r.failure.empty() && judges_claims(set.scene(r.spec.scene), false) &&
             std::isfinite(r.value(metric::momentum_drift_max)))
             runs.push_back(&r), v.momentum_worst = std::max(v.momentum_worst, r.value(metric::momentum_drift_max));
     v.momentum_runs = static_cast<int>(runs.size());
@@ -119,17 +118,17 @@ void claims_verdict(const ResultSet& set, SchemeVerdict& v) {
     };
     for (const auto& [scene, runs] : ladders) {
         const SceneInfo& info_of = set.scene(scene);
-        if (claims_scene(scene, false) && judged_without_torque(info_of)) {
+        if (claims_scene(scene, false) && judges_claims(info_of, false)) {
             if (c.without_torque.order > 0 && runs.size() >= 3) judge(judge_order(runs, c.without_torque.order), "order_without_torque", scene);
             if (c.exact_without_torque) judge(judge_exact(runs), "exact_without_torque", scene);
             if (c.conserves_momentum) judge(judge_momentum(runs), "conserves_momentum", scene);
         }
-        if (claims_scene(scene, true) && judged_with_torque(info_of) && c.with_torque.order > 0 && runs.size() >= 3)
+        if (claims_scene(scene, true) && judges_claims(info_of, true) && c.with_torque.order > 0 && runs.size() >= 3)
             judge(judge_order(runs, c.with_torque.order), "order_with_torque", scene);
     }
     if (c.bounded_energy)
         for (const auto& h : set.horizons)
-            if (h.spec.scheme == v.scheme && h.spec.params.empty() && claims_scene(h.spec.scene, true) && judged_with_torque(set.scene(h.spec.scene)))
+            if (h.spec.scheme == v.scheme && h.spec.params.empty() && claims_scene(h.spec.scene, true) && judges_claims(set.scene(h.spec.scene), true))
                 judge(judge_bounded_energy(h), "bounded_energy", h.spec.scene);
 }
 
@@ -149,11 +148,6 @@ void stability_verdict(const std::vector<StabilityRow>& stability, SchemeVerdict
 }
 
 }  // namespace
-
-bool OrderVerdict::at_least(int order) const {
-    const bool stuck_at_round_off = no_convergence == 0 || stuck_hi < round_off_plateau;
-    return scenes() > 0 && insufficient == 0 && stuck_at_round_off && (fitted == 0 || lo >= order - order_tolerance);
-}
 
 std::string cost_scene(const ResultSet& set) {
     if (set.scenes.count("asymmetric_free")) return "asymmetric_free";
@@ -242,19 +236,28 @@ SchemeChoice recommend(const std::vector<SchemeVerdict>& verdicts, const std::ve
         return (std::isnan(a->ns_per_step) ? INFINITY : a->ns_per_step) < (std::isnan(b->ns_per_step) ? INFINITY : b->ns_per_step);
     });
     for (const SchemeVerdict* v : sorted) {
-        std::vector<std::string> why;
         if (v->control) {
             rec.avoid.push_back({v->scheme, "a deliberately wrong control"});
             continue;
         }
-        if (v->torque.scenes() && !v->torque.at_least(2))
-            why.push_back(v->torque.fitted ? fmt::format("order {:.2g} under an orientation-dependent torque", v->torque.lo)
-                                           : "no second order under an orientation-dependent torque");
-        if (v->free.scenes() && !v->free.at_least(2)) why.push_back("no second order without torque");
+        // Only what the claims module judged, as the gate judges it: a scheme recommended for its
+        // second order claims it, and its claims hold on the runs there are.
+        if (v->claims_judged == 0) {
+            rec.unjudged.push_back(v->scheme);
+            continue;
+        }
+        std::vector<std::string> why;
+        if (v->torque.claimed_order < 2)
+            why.push_back(v->torque.claimed_order > 0 ? fmt::format("order {} under an orientation-dependent torque", v->torque.claimed_order)
+                                                      : "claims no order under an orientation-dependent torque");
+        if (v->free.claimed != "exact" && v->free.claimed_order < 2)
+            why.push_back(v->free.claimed_order > 0 ? fmt::format("order {} without torque", v->free.claimed_order)
+                                                    : "claims no order without torque");
         if (v->momentum_runs && !v->momentum_kept)
             why.push_back(fmt::format("loses angular momentum without torque (up to {:.1e})", v->momentum_worst));
         if (!v->stability_weak.empty() && v->stability_lo < weak_stability_ratio)
             why.push_back(fmt::format("stable only to {:.2g} of Peng's step on {}", v->stability_lo, v->stability_weak));
+        if (!v->claims_failed.empty()) why.push_back(fmt::format("fails its claims: {}", fmt::join(v->claims_failed, ", ")));
         if (!why.empty()) {
             std::string text;
             for (const auto& w : why) text += (text.empty() ? "" : "; ") + w;

@@ -22,14 +22,7 @@ struct OrderVerdict {
     int fitted = 0, exact = 0, insufficient = 0, no_convergence = 0;
     double stuck_lo = NAN, stuck_hi = NAN;  // relative error at the finest step where it does not converge
     int scenes() const { return fitted + exact + insufficient + no_convergence; }
-    // Every judged scene fitted at least `order` - order_tolerance, exact, or stuck at a relative
-    // error below round_off_plateau.
-    bool at_least(int order) const;
 };
-
-// An error that stops falling below this, relative to |w_ref|, is round-off accumulating over the
-// run (10 eps per step reach 1e-9 in 5e5 steps), not a scheme short of its order.
-inline constexpr double round_off_plateau = 1e-8;
 
 enum class EnergyVerdict { none, kept, bounded, drifting, not_judged };
 
@@ -87,12 +80,14 @@ inline constexpr double weak_stability_ratio = 0.1;
 // Which schemes to use and which to avoid, and why, from the verdicts alone (the report's
 // recommendation).
 struct SchemeChoice {
-    // Second order with and without torque, momentum kept, energy bounded, no weak stability;
-    // cheapest first.
+    // Claims second order with and without torque and meets its claims (as the gate judges
+    // them), momentum kept, energy bounded, no weak stability; cheapest first.
     std::vector<std::string> use;
-    // Second order and momentum kept, but energy drifting: for short runs; cheapest first.
+    // The same, but energy drifting: for short runs; cheapest first.
     std::vector<std::string> short_runs;
     std::vector<std::pair<std::string, std::string>> avoid;  // scheme, why
+    // None of its claims judged here (no run on the scenes that judge them): neither.
+    std::vector<std::string> unjudged;
     // Under damping (ζ > 0): each damping ratio at which, on some contact pair, no sound
     // scheme is stable at Peng's step; the scene where the best falls shortest, and its ratio.
     struct Unsafe {

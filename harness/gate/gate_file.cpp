@@ -1,5 +1,7 @@
 #include "harness/gate/gate_file.hpp"
 
+#include "harness/analysis/claims.hpp"
+#include "harness/analysis/result_set.hpp"
 #include "harness/core/fnv1a.hpp"
 #include "harness/core/metrics.hpp"
 #include "harness/store/client.hpp"
@@ -173,11 +175,7 @@ std::vector<std::string> claim_scenes(const std::string& path, const std::string
     const auto list = ids(path, key, node, SceneRegistry::instance(), "scene");
     if (list.empty()) toml_error(path, node, "'" + key + "' is an empty list");
     for (const auto& id : list) {
-        const auto scene = make_scene(id);
-        const bool fits = scene->has_reference() &&
-                          (torque ? scene->torque_depends_on_orientation() && scene->conserves_energy()
-                                  : scene->conserves_angular_momentum());
-        if (!fits)
+        if (!judges_claims(scene_info(*make_scene(id)), torque))
             toml_error(path, node, "'" + id + "' is not a " +
                                        (torque ? std::string("scene with a reference and an orientation-dependent torque that conserves energy")
                                                : std::string("torque-free scene with a reference")));
