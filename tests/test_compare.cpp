@@ -175,6 +175,34 @@ TEST_CASE("compare: comparing nothing fails") {
     CHECK_FALSE(std::any_of(same.verdicts.begin(), same.verdicts.end(), [](const Verdict& x) { return x.of.id == "baseline_matched"; }));
 }
 
+TEST_CASE("compare: runs of the baseline missing from the new results fail, and an order they carried is lost") {
+    const auto base = ladder("direct");
+    SECTION("one run missing: baseline_matched fails and names it; the order on three rungs is still measured") {
+        const std::vector<RunResult> now(base.begin(), base.end() - 1);
+        const Comparison c = compare_runs(base, now, {}, "base");
+        const Verdict v = find(c, "baseline_matched");
+        CHECK_FALSE(v.passed);
+        CHECK(v.of.scene == "dipole_top");
+        CHECK(v.of.scheme == "direct");
+        CHECK_THAT(v.message, Catch::Contains("1 run of the baseline not in the new results (trajectory dt=0.0025)"));
+    }
+    SECTION("two missing: the order is not measurable on the two left, a regression") {
+        const std::vector<RunResult> now(base.begin(), base.begin() + 2);
+        const Verdict ord = find(compare_runs(base, now, {}, "base"), "baseline_order");
+        CHECK_FALSE(ord.passed);
+        CHECK_THAT(ord.message, Catch::Contains("and is not measurable now"));
+    }
+    SECTION("a whole scheme missing: a failed verdict of its own, though every run of the other matched") {
+        auto both = base;
+        for (const auto& r : ladder("zvw")) both.push_back(r);
+        const Comparison c = compare_runs(both, base, {}, "base");
+        const Verdict v = find(c, "baseline_matched");
+        CHECK_FALSE(v.passed);
+        CHECK(v.of.scheme == "zvw");
+        CHECK_THAT(v.message, Catch::Contains("4 runs of the baseline not in the new results"));
+    }
+}
+
 TEST_CASE("compare: a cost regression counts only when it is large and significant against the timing repeats") {
     std::mt19937_64 rng(7);
     std::normal_distribution<double> noise(1.0, 0.02);
@@ -244,5 +272,17 @@ TEST_CASE("gate --baseline: the same gate against its own earlier run passes") {
     INFO(again.out);
     CHECK(again.status == 0);
     CHECK_THAT(again.out, Catch::Contains("PASS dipole_top/zvw: zvw: baseline_order on dipole_top"));
+    // One scheme of the two selected: the other's baseline runs are not missing, they were not asked for.
+    const Cli one = cli({"gate", (dir / "g.toml").string(), "--schemes", "zvw", "--baseline", (dir / "first").string()});
+    INFO(one.out);
+    CHECK(one.status == 0);
+    CHECK_THAT(one.out, !Catch::Contains("baseline_matched"));
+    // A step dropped from the gate file (another added): the baseline's run at it is missing, a regression.
+    write(dir / "g.toml", "[[check]]\nscene = \"dipole_top\"\nschemes = [\"direct\", \"zvw\"]\nmin_order = 0.8\n"
+                          "dt = [0.02, 0.01, 0.0025]\n");
+    const Cli fewer = cli({"gate", (dir / "g.toml").string(), "--baseline", (dir / "first").string()});
+    CHECK(fewer.status == 1);
+    CHECK_THAT(fewer.out, Catch::Contains("FAIL dipole_top/zvw: zvw: baseline_matched on dipole_top: 1 run of the baseline not in the "
+                                          "new results (trajectory dt=0.005)"));
     fs::remove_all(dir);
 }

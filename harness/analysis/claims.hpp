@@ -9,6 +9,7 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace rotbench {
@@ -81,5 +82,29 @@ Judgement judge_stability_margin(const RunResult& search, double min_ratio);
 // same scene and step (the bound is the gate file's), unless significantly above it: the median
 // ratio's 95 % interval wholly above the bound fails.
 Judgement judge_cost_ratio(const RunResult& cost, double max_ratio);
+
+// Against a baseline (`rotbench compare`, `gate --baseline`; harness/analysis/baseline_claims.cpp):
+// the new runs of one scene and scheme claim to be no worse than the same runs of BASE.
+struct BaselineTolerances {
+    double error = 0.10;         // an error up by more than 10 % is a regression
+    double order = 0.1;          // an observed order down by more than 0.1
+    double cost = 0.05;          // a cost up by more than 5 %, and significant:
+    double significance = 0.05;  // Mann-Whitney U test of the timing repeats, two-sided p below this
+};
+using RunPairs = std::vector<std::pair<const RunResult*, const RunResult*>>;  // (base, new), matched runs
+// The worst relative increase of an error metric above round-off; the claims' metric takes the
+// headline when it regressed.
+Judgement judge_baseline_accuracy(const RunPairs& runs, const BaselineTolerances& t);
+// No run became unstable or failed (nor an ensemble member more), no stability limit fell.
+Judgement judge_baseline_stability(const RunPairs& runs, const BaselineTolerances& t);
+// Each observed order of the base ladder (every trajectory run BASE has) against the new one's:
+// down beyond both intervals, or no longer measurable, is a regression.
+Judgement judge_baseline_order(const RunRefs& base_ladder, const RunRefs& new_ladder, const BaselineTolerances& t);
+// The timing repeats per step, pooled over the runs: up by more than t.cost and significant.
+// Not tested (passed, `tested` false) with fewer than 5 repeats on a side.
+struct CostJudgement : Judgement {
+    bool tested = true;
+};
+CostJudgement judge_baseline_cost(const RunPairs& runs, const BaselineTolerances& t);
 
 }  // namespace rotbench

@@ -47,10 +47,10 @@ public:
         command.add_flag("--overwrite", overwrite_, "replace compare's earlier outputs (in --out, and --junit and --summary files)");
     }
     int run(const Invocation& how) override {
-        CompareOptions options;
-        options.error_tolerance = parse_positive(error_, "--error-tolerance");
-        options.order_tolerance = parse_positive(order_, "--order-tolerance");
-        options.cost_tolerance = parse_positive(cost_, "--cost-tolerance");
+        BaselineTolerances tolerances;
+        tolerances.error = parse_positive(error_, "--error-tolerance");
+        tolerances.order = parse_positive(order_, "--order-tolerance");
+        tolerances.cost = parse_positive(cost_, "--cost-tolerance");
         const auto base = read_results(base_), now = read_results(now_);
         check_distinct_outputs({{"--junit", junit_},
                                 {"--summary", summary_},
@@ -60,7 +60,7 @@ public:
         if (!summary_.empty()) check_output_file(summary_, "--summary", overwrite_, markdown_signature);
         std::optional<OutputDir> dir;
         if (!out_.empty()) dir = OutputDir::open(out_, {"compare", "compare.csv", {"compare.csv", "summary.json"}, overwrite_});
-        const Comparison c = compare_runs(base, now, options, base_);
+        const Comparison c = compare_runs(base, now, tolerances, base_);
         GateResult result;
         result.verdicts = c.verdicts;
         result.warnings = client_changes(read_schemes(base_), read_schemes(now_));
@@ -76,7 +76,8 @@ public:
     }
 
 private:
-    std::string base_, now_, out_, junit_, summary_, error_ = "0.1", order_ = "0.1", cost_ = "0.05";
+    std::string base_, now_, out_, junit_, summary_, error_ = fmt::format("{:g}", BaselineTolerances{}.error),
+                order_ = fmt::format("{:g}", BaselineTolerances{}.order), cost_ = fmt::format("{:g}", BaselineTolerances{}.cost);
     bool overwrite_ = false;
 };
 

@@ -14,6 +14,7 @@
 #include "harness/store/results_csv.hpp"
 #include "reports/gate_report.hpp"
 
+#include <algorithm>
 #include <cstdlib>
 #include <fcntl.h>
 #include <unistd.h>
@@ -110,7 +111,12 @@ public:
 
         GateResult result = judge_gate(file, plan, std::move(runs));
         if (!baseline_.empty()) {
-            const Comparison c = compare_runs(baseline, result.runs, {}, baseline_);
+            // The baseline's runs of the schemes this gate ran: a scheme left out by --schemes is not missing.
+            std::vector<RunResult> selected;
+            for (const auto& r : baseline)
+                if (std::any_of(plan.runs.begin(), plan.runs.end(), [&](const RunSpec& s) { return s.scheme == r.spec.scheme; }))
+                    selected.push_back(r);
+            const Comparison c = compare_runs(selected, result.runs, {}, baseline_);
             result.verdicts.insert(result.verdicts.end(), c.verdicts.begin(), c.verdicts.end());
             result.warnings.insert(result.warnings.end(), c.notes.begin(), c.notes.end());
         }

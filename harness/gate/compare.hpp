@@ -2,19 +2,13 @@
 // regression. `rotbench compare BASE NEW` and `rotbench gate --baseline DIR` judge with it.
 #pragma once
 
+#include "harness/analysis/claims.hpp"
 #include "harness/gate/gate.hpp"
 
 #include <string>
 #include <vector>
 
 namespace rotbench {
-
-struct CompareOptions {
-    double error_tolerance = 0.10;  // an error up by more than 10 % is a regression
-    double order_tolerance = 0.1;   // an observed order down by more than 0.1
-    double cost_tolerance = 0.05;   // a cost up by more than 5 %, and significant:
-    double significance = 0.05;     // Mann-Whitney U test of the timing repeats, two-sided p below this
-};
 
 struct MetricChange {
     RunSpec spec;
@@ -25,13 +19,15 @@ struct MetricChange {
 
 struct Comparison {
     std::vector<MetricChange> changes;  // every metric of every run found in both
-    std::vector<Verdict> verdicts;      // per scene and scheme: baseline_accuracy, _order, _stability, _cost
+    // Per scene and scheme: baseline_accuracy, _order, _stability, _cost (claims.hpp's judges), and
+    // baseline_matched where runs of the baseline are missing (or none matched at all).
+    std::vector<Verdict> verdicts;
     std::vector<std::string> notes;     // runs found in one only; costs too thinly timed to test
 };
 
 // Runs are matched by scene, scheme, kind, dt, duration and parameters. `where` names the
 // baseline in the verdicts (their location).
-Comparison compare_runs(const std::vector<RunResult>& base, const std::vector<RunResult>& now, const CompareOptions& options,
+Comparison compare_runs(const std::vector<RunResult>& base, const std::vector<RunResult>& now, const BaselineTolerances& tolerances,
                         const std::string& where);
 
 // scene,scheme,kind,dt,metric,base,new,change (RFC 4180).
