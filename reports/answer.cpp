@@ -44,14 +44,6 @@ std::string limit_cell(const LargestDt& a) {
 
 }  // namespace
 
-std::string answer_csv(const std::vector<LargestDt>& answers) {
-    std::string csv = "tolerance,scene,scheme,how,dt,cpu_seconds,dt_limit,limit_from\n";
-    for (const auto& a : answers)
-        csv += csv_record({format_number(a.tolerance), a.scene, a.scheme, a.how, format_number(a.dt), format_number(a.cpu_seconds),
-                           format_number(a.dt_limit), a.limit_from});
-    return csv;
-}
-
 std::string answer_section(const ResultSet& set, const std::vector<LargestDt>& answers, const std::vector<double>& tolerances) {
     if (answers.empty()) return "";
     const auto scenes = ranking_scenes(answers);

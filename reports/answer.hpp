@@ -1,4 +1,4 @@
-// "The answer" (harness/analysis/answer.hpp) as answer.csv and as the report's section.
+// "The answer" (harness/analysis/answer.hpp) as the report's section.
 #pragma once
 
 #include "harness/analysis/answer.hpp"
@@ -7,9 +7,6 @@
 #include <vector>
 
 namespace rotbench {
-
-// answer.csv: tolerance,scene,scheme,how,dt,cpu_seconds,dt_limit,limit_from.
-std::string answer_csv(const std::vector<LargestDt>& answers);
 
 // Markdown: the first screen's table (the two ranking scenes, ranked by the geometric mean of
 // their CPU times); and, further down the report, every scene in a collapsed section.

@@ -6,8 +6,7 @@
 
 namespace rotbench {
 
-std::string clients_section(const ResultSet& set) {
-    const auto verdicts = counterpart_verdicts(set);
+std::string clients_section(const std::vector<CounterpartVerdict>& verdicts) {
     if (verdicts.empty()) return "";
     std::string md = "## " + clients_heading + "\n\n";
     md += "Each client's run is compared at every step with its counterpart's run on the same scene at the same dt "

@@ -12,6 +12,6 @@ namespace rotbench {
 inline const std::string clients_heading = "Real clients: codes run as shipped, against their counterparts";
 
 // Empty when no client with a counterpart has runs in the set.
-std::string clients_section(const ResultSet& set);
+std::string clients_section(const std::vector<CounterpartVerdict>& verdicts);
 
 }  // namespace rotbench

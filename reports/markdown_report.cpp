@@ -19,7 +19,7 @@
 #include "reports/panels.hpp"
 #include "reports/stability_report.hpp"
 #include "reports/verdicts.hpp"
-#include "reports/seed_table1.hpp"
+#include "harness/analysis/seed_table1.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -148,8 +148,7 @@ void scene_section(std::string& md, const SceneInfo& entry, const ResultSet& set
     md += "\n";
 }
 
-void table1_section(std::string& md, const std::vector<RunResult>& results) {
-    const auto rows = compare_table1(results);
+void table1_section(std::string& md, const std::vector<Table1Comparison>& rows) {
     if (rows.empty()) return;
     md += "## Seed Table 1 reproduced\n\n"
           "Published (seed 000, Table 1, \"mean squared error\") and computed error of the body-frame angular "
@@ -239,14 +238,9 @@ std::string link(const std::string& text, const std::string& heading) { return "
 
 }  // namespace
 
-std::string markdown_report(const ResultSet& set, const std::string& command_line, const OutputDir& dir,
-                            const ReportOptions& options, const ParallelWork& parallel) {
+std::string markdown_report(const Analysis& a, const std::string& command_line, const OutputDir& dir, const ParallelWork& parallel) {
+    const ResultSet& set = a.set;
     const std::vector<RunResult>& results = set.runs;
-    std::vector<ExpectedOrder> expected;
-    for (const auto& [id, info] : set.schemes) add_expected_orders(id, info.claims, expected);
-    const auto orders = observed_orders(results);
-    const auto answers = largest_dts(set, orders, options.tolerances, options.stability);
-    dir.write("answer.csv", answer_csv(answers));
     const auto scenes = unique_in_order(results, &RunSpec::scene);
     const auto schemes = unique_in_order(results, &RunSpec::scheme);
 
@@ -267,8 +261,7 @@ std::string markdown_report(const ResultSet& set, const std::string& command_lin
                               "compare with theirs. Rebuild it with `rotbench_add_scheme()` and its default flags.\n\n",
                               id, info.plugin_build, info.plugin_path, ROTBENCH_PLUGIN_BUILD);
 
-    const auto verdicts = scheme_verdicts(set, orders, options.stability);
-    md += recommendation_section(recommend(verdicts, options.stability), verdicts);
+    md += recommendation_section(a.recommendation, a.verdicts);
     const std::string answer_heading = "The answer: the largest dt for a tolerance";
     md += "## Contents\n\n- " + link("Verdicts", "Verdicts") + " · " + link("The answer", answer_heading) + " · " +
           link("Stability limits", "Stability limits") + " · " + link("Cost", cost_heading) + "\n- Scenes:";
@@ -278,22 +271,22 @@ std::string markdown_report(const ResultSet& set, const std::string& command_lin
           " · " + link("Schemes", "Schemes: sources, readings, and what each claims") + " · " +
           link("Metrics and the order fit", "Metrics and the order fit") + "\n\n";
 
-    md += verdict_section(set, verdicts, !options.stability.empty());
-    md += clients_section(set);
-    md += answer_section(set, answers, options.tolerances);
-    md += stability_summary(options.stability, set, dir);
+    md += verdict_section(set, a.verdicts, !a.stability.empty());
+    md += clients_section(a.counterparts);
+    md += answer_section(set, a.answers, a.tolerances);
+    md += stability_summary(a.stability, set, dir);
     md += cost_section(dir.path());
     md += granular_speed_section(dir.path());
 
     // The overview panel of each scene's plots: per family, the scheme that reaches the
     // strictest tolerance at the least CPU time there (or, without a reference, the smallest
     // plotted error at the finest step).
-    const double strictest = *std::min_element(options.tolerances.begin(), options.tolerances.end());
+    const double strictest = *std::min_element(a.tolerances.begin(), a.tolerances.end());
     const auto best_on = [&](const std::string& scene) {
         return best_of_families(set, schemes, [&](const std::string& scheme) {
-            for (const auto& a : answers)
-                if (a.scene == scene && a.scheme == scheme && a.tolerance == strictest)
-                    return std::isfinite(a.cpu_seconds) ? a.cpu_seconds : INFINITY;
+            for (const auto& answer : a.answers)
+                if (answer.scene == scene && answer.scheme == scheme && answer.tolerance == strictest)
+                    return std::isfinite(answer.cpu_seconds) ? answer.cpu_seconds : INFINITY;
             double dt = INFINITY, e = INFINITY;
             for (const auto& r : results)
                 if (r.spec.scene == scene && r.spec.scheme == scheme && r.spec.dt < dt) dt = r.spec.dt, e = r.value(metric::energy_drift_max);
@@ -304,14 +297,14 @@ std::string markdown_report(const ResultSet& set, const std::string& command_lin
     // one process at a time otherwise. Each section is its own string; they join in order.
     std::vector<std::string> sections(scenes.size());
     parallel(scenes.size(), [&](std::size_t i) {
-        scene_section(sections[i], set.scene(scenes[i]), set, orders, dir, best_on(scenes[i]), expected);
+        scene_section(sections[i], set.scene(scenes[i]), set, a.orders, dir, best_on(scenes[i]), a.expected);
     });
     for (const auto& section : sections) md += section;
-    md += answer_details_section(answers, options.tolerances);
-    table1_section(md, results);
+    md += answer_details_section(a.answers, a.tolerances);
+    table1_section(md, a.table1);
     md += granular_section(set, dir);
     md += energy_series_section(set, dir, parallel);
-    schemes_section(md, set, expected);
+    schemes_section(md, set, a.expected);
     md += "## Metrics and the order fit\n\n";
     for (const auto& m : metric_table())
         if (!m.meaning.empty()) md += fmt::format("- `{}`{}: {}.\n", m.name, m.unit.empty() ? "" : fmt::format(" ({})", m.unit), m.meaning);

@@ -1,6 +1,6 @@
 // The seed's Table 1 (Irazabal et al., test case 1), reproduced entry by entry.
 #include "harness/exec/run.hpp"
-#include "reports/seed_table1.hpp"
+#include "harness/analysis/seed_table1.hpp"
 #include "schemes/munjiza_rk4.hpp"
 
 #include <catch2/catch.hpp>

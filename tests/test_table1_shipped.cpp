@@ -1,6 +1,6 @@
 // Table 1's third column: the seed's own code, Kratos DEM as shipped, set beside the published
 // value and rotbench's, from whatever client runs are in the results.
-#include "reports/seed_table1.hpp"
+#include "harness/analysis/seed_table1.hpp"
 
 #include <catch2/catch.hpp>
 

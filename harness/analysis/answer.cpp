@@ -1,5 +1,7 @@
 #include "harness/analysis/answer.hpp"
 
+#include "harness/store/csv.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
@@ -73,6 +75,14 @@ std::vector<LargestDt> largest_dts(const ResultSet& set, const std::vector<Order
             out.push_back(a);
         }
     return out;
+}
+
+std::string answer_csv(const std::vector<LargestDt>& answers) {
+    std::string csv = "tolerance,scene,scheme,how,dt,cpu_seconds,dt_limit,limit_from\n";
+    for (const auto& a : answers)
+        csv += csv_record({format_number(a.tolerance), a.scene, a.scheme, a.how, format_number(a.dt), format_number(a.cpu_seconds),
+                           format_number(a.dt_limit), a.limit_from});
+    return csv;
 }
 
 }  // namespace rotbench

@@ -1,6 +1,6 @@
 // "The answer": for each tolerance on the relative angular-velocity error, the largest dt at
 // which each scheme meets it on each scene, what a run at that dt costs, and whether that dt
-// lies below the measured stability limit. reports/answer.hpp writes it.
+// lies below the measured stability limit (answer.csv; reports/answer.hpp formats it).
 #pragma once
 
 #include "harness/analysis/orders.hpp"
@@ -40,5 +40,8 @@ LargestDt largest_dt(const std::vector<const RunResult*>& runs, const OrderRow& 
 // (its limits scale as 1/w exactly) over the scene's largest |w_ref|.
 std::vector<LargestDt> largest_dts(const ResultSet& set, const std::vector<OrderRow>& orders,
                                    const std::vector<double>& tolerances, const std::vector<StabilityRow>& stability);
+
+// answer.csv: tolerance,scene,scheme,how,dt,cpu_seconds,dt_limit,limit_from.
+std::string answer_csv(const std::vector<LargestDt>& answers);
 
 }  // namespace rotbench

@@ -1,11 +1,10 @@
 #include "harness/cli/outputs.hpp"
 
 #include "harness/analysis/ensemble.hpp"
-#include "harness/analysis/orders.hpp"
+#include "harness/analysis/analysis.hpp"
 #include "harness/analysis/result_set.hpp"
 #include "harness/exec/parallel.hpp"
 #include "harness/analysis/ensemble_csv.hpp"
-#include "harness/analysis/orders_csv.hpp"
 #include "harness/store/output_files.hpp"
 #include "harness/store/parse.hpp"
 #include "harness/store/results_csv.hpp"
@@ -38,23 +37,22 @@ std::vector<double> parse_tolerances(const std::vector<std::string>& texts) {
     return out;
 }
 
-ReportOptions report_options(const std::vector<std::string>& tolerances, const fs::path& stability_dir) {
-    ReportOptions options;
+AnalysisOptions analysis_options(const std::vector<std::string>& tolerances, const fs::path& stability_dir) {
+    AnalysisOptions options;
     options.tolerances = parse_tolerances(tolerances);
     if (fs::exists(stability_dir / "stability.csv")) options.stability = read_stability(stability_dir);
     return options;
 }
 
 void write_outputs(const OutputDir& dir, const std::vector<RunResult>& all_runs, const std::string& command_line,
-                   const ReportOptions& report, std::ostream& out, const SchemeInfos& recorded) {
+                   const AnalysisOptions& options, std::ostream& out, const SchemeInfos& recorded) {
     // An ensemble's members go to ensemble.csv; the other files hold their means and intervals.
     if (const std::string members = ensemble_csv(all_runs); !members.empty()) dir.write("ensemble.csv", members);
     const std::vector<RunResult> results = collapse_ensembles(all_runs);
     write_run_files(dir, results, recorded);
-    const auto orders = observed_orders(results);
-    dir.write("orders.csv", orders_csv(orders));
-    dir.write("local_orders.csv", local_orders_csv(orders));
-    dir.write("report.md", markdown_report(describe(results, recorded), command_line, dir, report, all_cores()));
+    const Analysis analysis = analyse(describe(results, recorded), options);
+    export_analysis(dir, analysis);
+    dir.write("report.md", markdown_report(analysis, command_line, dir, all_cores()));
     out << fmt::format("wrote {} and {}\n", (dir.path() / "results.csv").string(), (dir.path() / "report.md").string());
 }
 

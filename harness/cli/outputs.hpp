@@ -30,13 +30,13 @@ void add_tolerance_option(CLI::App& command, std::vector<std::string>& texts);
 // Each in (0, 1) (InputError otherwise); the defaults when none is given.
 std::vector<double> parse_tolerances(const std::vector<std::string>& texts);
 
-// The report's options: the tolerances, and the stability study in `stability_dir` when it
+// The analysis's options: the tolerances, and the stability study in `stability_dir` when it
 // holds a stability.csv.
-ReportOptions report_options(const std::vector<std::string>& tolerances, const std::filesystem::path& stability_dir);
+AnalysisOptions analysis_options(const std::vector<std::string>& tolerances, const std::filesystem::path& stability_dir);
 
-// results.csv, runs.csv, orders.csv, local_orders.csv, answer.csv and report.md; the schemes
-// not registered in this process described as `recorded` (earlier commands' schemes.json).
+// The run files (harness/store/output_files.hpp), the analysis's (export_analysis) and report.md;
+// the schemes not registered in this process described as `recorded` (earlier commands' schemes.json).
 void write_outputs(const OutputDir& dir, const std::vector<RunResult>& results, const std::string& command_line,
-                   const ReportOptions& report, std::ostream& out, const SchemeInfos& recorded = {});
+                   const AnalysisOptions& options, std::ostream& out, const SchemeInfos& recorded = {});
 
 }  // namespace rotbench

@@ -1,5 +1,5 @@
 // `rotbench report DIR`: report.md and its plots again, from the run store a run left in DIR.
-#include "harness/analysis/result_set.hpp"
+#include "harness/analysis/analysis.hpp"
 #include "harness/cli/outputs.hpp"
 #include "harness/cli/verb.hpp"
 #include "harness/store/output_files.hpp"
@@ -19,16 +19,19 @@ public:
         add_tolerance_option(command, tolerances_);
     }
     int run(const Invocation& how) override {
-        const ReportOptions options = report_options(tolerances_, stability_.empty() ? dir_ : stability_);
+        const AnalysisOptions options = analysis_options(tolerances_, stability_.empty() ? dir_ : stability_);
         if (!stability_.empty() && options.stability.empty())
             throw InputError("--stability " + stability_ + ": no stability.csv there (rotbench stability --out writes one)");
-        const ResultSet set = describe(read_results(dir_), read_schemes(dir_));
-        const OutputDir out = OutputDir::open(out_.empty() ? dir_ : out_, {"run", "", {"report.md", "answer.csv"}, overwrite_});
+        const Analysis analysis = analyse(describe(read_results(dir_), read_schemes(dir_)), options);
+        std::vector<std::string> written = analysis_files;
+        written.push_back("report.md");
+        const OutputDir out = OutputDir::open(out_.empty() ? dir_ : out_, {"run", "", written, overwrite_});
         if (!out_.empty() && !std::filesystem::equivalent(out_, dir_))
             for (const char* table : {"cost.csv", "granular_speed.csv"})  // the cost tables go with the report
                 if (std::filesystem::exists(std::filesystem::path(dir_) / table))
                     out.write(table, read_input_file(std::filesystem::path(dir_) / table, "cannot read"));
-        out.write("report.md", markdown_report(set, how.command_line, out, options, all_cores()));
+        export_analysis(out, analysis);
+        out.write("report.md", markdown_report(analysis, how.command_line, out, all_cores()));
         how.out << "wrote " << (out.path() / "report.md").string() << "\n";
         return 0;
     }

@@ -98,7 +98,7 @@ int run_sweep_command(const RunOptionsText& o, const Invocation& how) {
     const OutputDir dir = OutputDir::open(how.resuming ? *how.resuming : fs::path(o.out),
                                           {"run", "results.csv", slice.shard ? slice_files : run_files, o.overwrite,
                                            how.resuming.has_value()});
-    const ReportOptions report = report_options(o.tolerances, dir.path());  // a stability study already in --out
+    const AnalysisOptions analysis = analysis_options(o.tolerances, dir.path());  // a stability study already in --out
     ExecOptions options{.jobs = o.jobs, .quiet = o.quiet};
     options.run.series_samples = o.energy_series;
     o.isolation.apply(options.run);
@@ -106,7 +106,7 @@ int run_sweep_command(const RunOptionsText& o, const Invocation& how) {
     Executor executor = make_executor(how, &dir, options);
     const std::vector<RunResult> results = executor.run(slice.runs);
     if (executor.signal()) return executor.interrupted();
-    if (!slice.shard) write_outputs(dir, results, how.command_line, report, how.out);
+    if (!slice.shard) write_outputs(dir, results, how.command_line, analysis, how.out);
     else write_slice(dir, slice, results, how.out);  // no orders or report: they need every run
     Journal::discard(dir.path());
     return 0;

@@ -1,4 +1,4 @@
-#include "reports/seed_table1.hpp"
+#include "harness/analysis/seed_table1.hpp"
 
 #include <cmath>
 
