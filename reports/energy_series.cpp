@@ -125,7 +125,6 @@ std::string energy_series_section(const ResultSet& set, const OutputDir& dir, co
         const double dt = group_list[g].first.second;
         const std::vector<const RunResult*>& runs = group_list[g].second;
         std::string& md = parts[g];
-        for (const RunResult* r : runs) write_series_file(*r, dir);
         const std::string name = fmt::format("energy_{}_dt{}", scene, dt_tag(dt));
         const Drawn drawn = draw_with_gnuplot(dir, "plots/" + name + ".gp", plot_script(scene, dt, runs, set), "plots/" + name + ".svg");
         md += fmt::format("### `{}`, dt = {:g} s\n\n", scene, dt);

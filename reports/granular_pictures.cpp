@@ -104,7 +104,6 @@ std::string granular_pictures(const std::string& scene, double dt, const std::ve
         if (!r->series.empty() && !r->has_energy_series()) curves.push_back(r);
     std::string md;
     if (!curves.empty()) {
-        for (const RunResult* r : curves) write_series_file(*r, dir);
         const std::string name = fmt::format("curve_{}_dt{}", scene, dt_tag(dt));
         const Drawn drawn = draw_with_gnuplot(dir, "plots/" + name + ".gp", curve_script(scene, dt, curves, name + ".svg", set), "plots/" + name + ".svg");
         md += fmt::format("{} of each scheme{}. Data: `series/`.\n\n", axes_of(scene).what,
@@ -114,8 +113,6 @@ std::string granular_pictures(const std::string& scene, double dt, const std::ve
     std::string pictures;
     for (const RunResult* r : runs) {
         if (r->snapshots.empty()) continue;
-        dir.write("snapshots/" + snapshot_file_name(r->spec), snapshot_csv(*r));
-        if (!r->walls.empty()) dir.write("walls/" + snapshot_file_name(r->spec), walls_csv(*r));
         const std::string name = fmt::format("snapshot_{}_{}_dt{}", scene, r->spec.scheme, dt_tag(dt));
         dir.write("plots/" + name + ".svg",
                   snapshot_svg(fmt::format("{}, {}, dt = {:g} s{}: spheres seen along +y (lighter: farther), walls in blue", scene, r->spec.scheme, dt,

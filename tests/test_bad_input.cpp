@@ -168,7 +168,7 @@ TEST_CASE("bad input: missing or unreadable input files and directories") {
             {{"gate", dir.string()}, "not a regular file (a directory)"},
             {{"report", (dir / "absent").string()}, "cannot read " + (dir / "absent" / "runs.jsonl").string()},
             {{"report", (dir / "not_results").string()}, "runs.jsonl: cut short or not a run store after 0 runs"},
-            {{"merge", (dir / "absent").string(), "--out", out}, "cannot read " + (dir / "absent" / "shard.csv").string()},
+            {{"merge", (dir / "absent").string(), "--out", out}, "cannot read " + (dir / "absent" / "runs.jsonl").string()},
             {{"list", "--plugin", (dir / "absent.so").string()}, "no such file"},
         },
         dir / "out");

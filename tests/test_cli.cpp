@@ -2,6 +2,7 @@
 #include "harness/exec/run.hpp"
 #include "schemes/scheme.hpp"
 #include "tests/cli_helpers.hpp"
+#include "harness/store/results_csv.hpp"
 
 #include <algorithm>
 #include <catch2/catch.hpp>
@@ -119,7 +120,7 @@ TEST_CASE("run --shard K/N and merge give the outputs of the unsharded run, timi
     const Cli foreign = cli({"merge", (dir / "s1").string(), (dir / "other").string(), (dir / "s3").string(), "--out", (dir / "m2").string()});
     CHECK(foreign.status == 2);
     CHECK_THAT(foreign.err, Catch::Contains("a slice of another sweep"));
-    const Cli not_a_shard = cli({"merge", (dir / "full").string(), "--out", (dir / "m2").string()});
+    const Cli not_a_shard = cli({"merge", (dir / "s1").string(), (dir / "full").string(), "--out", (dir / "m2").string()});
     CHECK(not_a_shard.status == 2);
     CHECK_THAT(not_a_shard.err, Catch::Contains("is a whole run, not a slice"));
     for (const char* bad : {"0/2", "3/2", "1/0", "a/b", "2", "1/2/3", "-1/2"}) {
@@ -177,13 +178,23 @@ TEST_CASE("rotbench --version names the version, the commit, the compiler and th
     CHECK_THAT(r.out, Catch::Contains("-ffp-contract=off"));
 }
 
-TEST_CASE("merge refuses a whole run, and says how to add schemes to one instead") {
+TEST_CASE("merge joins whole runs, each run once, and no slice among them") {
     const fs::path dir = fresh_dir("merge_whole_run");
-    REQUIRE(binary({"run", "--schemes", "direct", "--scenes", "asymmetric_free", "--quick", "--out", (dir / "a").string()}).status == 0);
-    const Cli r = binary({"merge", (dir / "a").string(), "--out", (dir / "m").string()});
-    CHECK(r.status == 2);
-    CHECK(one_line(r.err));
-    CHECK_THAT(r.err, Catch::Contains("is a whole run, not a slice") && Catch::Contains("run it again with all of them"));
-    CHECK_FALSE(fs::exists(dir / "m"));
+    const auto run = [&](const char* scheme, const char* out) {
+        return binary({"run", "--schemes", scheme, "--scenes", "asymmetric_free", "--quick", "--out", (dir / out).string()}).status;
+    };
+    REQUIRE(run("direct", "a") == 0);
+    REQUIRE(run("zvw", "b") == 0);
+    REQUIRE(binary({"merge", (dir / "a").string(), (dir / "b").string(), "--out", (dir / "m").string()}).status == 0);
+    const auto joined = read_results(dir / "m"), a = read_results(dir / "a"), b = read_results(dir / "b");
+    REQUIRE(joined.size() == a.size() + b.size());
+    CHECK(joined.front().spec == a.front().spec);
+    CHECK(joined.back().spec == b.back().spec);
+    CHECK_THAT(read(dir / "m" / "report.md"), Catch::Contains("| `direct` |") && Catch::Contains("| `zvw` |"));
+    const Cli twice = binary({"merge", (dir / "a").string(), (dir / "a").string(), "--out", (dir / "twice").string()});
+    CHECK(twice.status == 2);
+    CHECK(one_line(twice.err));
+    CHECK_THAT(twice.err, Catch::Contains("is in both") && Catch::Contains("--set SCENE.seed=N"));
+    CHECK_FALSE(fs::exists(dir / "twice"));
     fs::remove_all(dir);
 }

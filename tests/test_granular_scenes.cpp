@@ -1,6 +1,7 @@
 // The granular scenes end to end through the CLI: ensembles, their report section, shards.
 #include "cli_helpers.hpp"
 
+#include "harness/analysis/ensemble.hpp"
 #include "harness/scenes/granular_scene.hpp"
 #include "harness/store/results_csv.hpp"
 
@@ -12,6 +13,9 @@ using namespace rotbench;
 using namespace rotbench::test;
 
 namespace {
+
+// A run folder's runs as its tables give them: an ensemble's members collapsed.
+std::vector<RunResult> read_tables(const fs::path& dir) { return collapse_ensembles(read_results(dir)); }
 
 double metric_of(const std::vector<RunResult>& runs, const std::string& scene, const std::string& scheme, const std::string& name) {
     for (const RunResult& r : runs)
@@ -41,7 +45,7 @@ TEST_CASE("granular scenes: an ensemble split into shards merges into the unshar
     const std::string members = read(dir / "whole" / "ensemble.csv");
     CHECK(members.find("silo_discharge,direct,2e-05,1,") != std::string::npos);
     CHECK(members.find("silo_discharge,direct,2e-05,2,") != std::string::npos);
-    CHECK(metric_of(read_results(dir / "whole"), "silo_discharge", "direct", "ensemble_size") == 2);
+    CHECK(metric_of(read_tables(dir / "whole"), "silo_discharge", "direct", "ensemble_size") == 2);
     // The shards keep each member's curve and snapshots; merged, they give the whole run's band and pictures.
     CHECK(fs::exists(dir / "a" / "series" / "curve_silo_discharge_direct_dt2e-05_seed1.csv"));
     for (const char* file : {"series/curve_silo_discharge_direct_dt2e-05.csv", "snapshots/silo_discharge_direct_dt2e-05.csv",
@@ -53,6 +57,32 @@ TEST_CASE("granular scenes: an ensemble split into shards merges into the unshar
     fs::remove_all(dir);
 }
 
+TEST_CASE("granular scenes: an ensemble grown in parts joins, through merge, into one run's tables") {
+    const fs::path dir = fresh_dir("granular_parts");
+    const std::vector<std::string> run = {"run", "--scenes", "silo_discharge", "--schemes", "direct,zvw_corrected", "--quick", "--t-end",
+                                          "0.05", "--set", "silo_discharge.fill_time=0.02", "--set", "silo_discharge.clusters=100",
+                                          "--quiet", "--ensemble"};
+    auto with = [&](std::vector<std::string> extra) {
+        std::vector<std::string> args = run;
+        args.insert(args.end(), extra.begin(), extra.end());
+        return cli(args);
+    };
+    REQUIRE(with({"4", "--out", (dir / "whole").string()}).status == 0);
+    REQUIRE(with({"2", "--out", (dir / "seeds_1_2").string()}).status == 0);
+    REQUIRE(with({"2", "--set", "silo_discharge.seed=3", "--out", (dir / "seeds_3_4").string()}).status == 0);
+    REQUIRE(cli({"merge", (dir / "seeds_1_2").string(), (dir / "seeds_3_4").string(), "--out", (dir / "merged").string()}).status == 0);
+    for (const char* file : {"results.csv", "ensemble.csv", "orders.csv", "answer.csv"}) {
+        INFO(file);
+        CHECK(without_timing(read(dir / "merged" / file)) == without_timing(read(dir / "whole" / file)));
+    }
+    CHECK(metric_of(read_tables(dir / "merged"), "silo_discharge", "direct", "ensemble_size") == 4);
+    for (const char* file : {"series/curve_silo_discharge_direct_dt2e-05.csv", "snapshots/silo_discharge_direct_dt2e-05.csv"}) {
+        INFO(file);
+        CHECK(read(dir / "merged" / file) == read(dir / "whole" / file));
+    }
+    fs::remove_all(dir);
+}
+
 TEST_CASE("granular scenes: the seed's three schemes on ensembles of a small silo and the quick shear box", "[slow]") {
     const fs::path dir = fresh_dir("granular_ensemble");
     std::vector<std::string> args = {"run", "--scenes", "silo_discharge,direct_shear", "--schemes", "direct,munjiza_rk4,zvw_corrected", "--quick",
@@ -60,7 +90,7 @@ TEST_CASE("granular scenes: the seed's three schemes on ensembles of a small sil
     args.insert(args.end(), small_silo_settings.begin(), small_silo_settings.end());
     const Cli r = cli(args);
     REQUIRE(r.status == 0);
-    const std::vector<RunResult> runs = read_results(dir);
+    const std::vector<RunResult> runs = read_tables(dir);
     for (const std::string scheme : {"direct", "munjiza_rk4", "zvw_corrected"}) {
         INFO(scheme);
         CHECK(metric_of(runs, "silo_discharge", scheme, "ensemble_size") == 2);
@@ -149,7 +179,7 @@ void check_shear_laws(const std::string& name, const std::vector<std::string>& e
     double last_peak = 0;
     std::ostringstream measured;  // the figures, for whoever runs the test by hand
     for (const double sigma : stresses) {
-        const std::vector<RunResult> results = read_results(dir / std::to_string(sigma));
+        const std::vector<RunResult> results = read_tables(dir / std::to_string(sigma));
         const auto value = [&](const char* metric) { return metric_of(results, "direct_shear", "richardson", metric); };
         const double peak = value("shear_stress_peak"), angle = std::atan(peak / value("normal_stress_mean")) * 180 / M_PI;
         INFO("sigma " << sigma << ": peak " << peak << " Pa, friction angle " << angle << " deg");
@@ -193,7 +223,7 @@ void check_silo_laws(const std::string& name, const std::vector<std::string>& ex
     std::vector<double> flow_root;  // W^(2/5)
     double angle = NAN;
     for (const double width : widths) {
-        const std::vector<RunResult> runs_of_width = read_results(dir / std::to_string(width));
+        const std::vector<RunResult> runs_of_width = read_tables(dir / std::to_string(width));
         INFO("orifice " << width);
         REQUIRE(metric_of(runs_of_width, "silo_discharge", "richardson", "clogged") == 0);
         flow_root.push_back(std::pow(metric_of(runs_of_width, "silo_discharge", "richardson", "mass_flow_rate"), 0.4));

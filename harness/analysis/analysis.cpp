@@ -1,6 +1,7 @@
 #include "harness/analysis/analysis.hpp"
 
 #include "harness/analysis/orders_csv.hpp"
+#include "harness/store/series_csv.hpp"
 
 namespace rotbench {
 
@@ -23,6 +24,7 @@ void export_analysis(const OutputDir& dir, const Analysis& a) {
     dir.write("orders.csv", orders_csv(a.orders));
     dir.write("local_orders.csv", local_orders_csv(a.orders));
     dir.write("answer.csv", answer_csv(a.answers));
+    write_run_series(a.set.runs, dir);  // what the report's plots draw: series/, snapshots/, walls/
 }
 
 }  // namespace rotbench

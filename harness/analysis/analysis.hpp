@@ -37,7 +37,8 @@ struct Analysis {
 
 Analysis analyse(ResultSet set, AnalysisOptions options);
 
-// The files export_analysis writes.
+// The files export_analysis writes, besides each run's series, snapshots and walls (series/,
+// snapshots/, walls/).
 inline const std::vector<std::string> analysis_files = {"orders.csv", "local_orders.csv", "answer.csv"};
 void export_analysis(const OutputDir& dir, const Analysis& analysis);
 

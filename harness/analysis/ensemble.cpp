@@ -25,11 +25,6 @@ ParamOverrides without_seed(const ParamOverrides& params) {
     return out;
 }
 
-// The members of an ensemble are the runs that differ in their seed only.
-RunSpec group_of(RunSpec s) {
-    s.params = without_seed(s.params);
-    return s;
-}
 
 // Counts and flags: averaged, no interval.
 bool is_count(const std::string& name) {
@@ -93,6 +88,11 @@ void collapse_curves(const std::vector<const RunResult*>& members, RunResult& c)
 
 }  // namespace
 
+RunSpec ensemble_of(RunSpec s) {
+    s.params = without_seed(s.params);
+    return s;
+}
+
 ParamOverrides ensemble_member(const ParamOverrides& overrides, double base_seed, int k) {
     ParamOverrides out = without_seed(overrides);
     out.push_back({"seed", {base_seed + k}});
@@ -102,11 +102,11 @@ ParamOverrides ensemble_member(const ParamOverrides& overrides, double base_seed
 std::vector<RunResult> collapse_ensembles(const std::vector<RunResult>& runs) {
     std::map<RunSpec, std::vector<const RunResult*>> groups;
     for (const RunResult& r : runs)
-        if (seed_of(r.spec)) groups[group_of(r.spec)].push_back(&r);
+        if (seed_of(r.spec)) groups[ensemble_of(r.spec)].push_back(&r);
     std::vector<RunResult> out;
     std::set<RunSpec> emitted;
     for (const RunResult& r : runs) {
-        const auto found = seed_of(r.spec) ? groups.find(group_of(r.spec)) : groups.end();
+        const auto found = seed_of(r.spec) ? groups.find(ensemble_of(r.spec)) : groups.end();
         if (found == groups.end() || found->second.size() < 2) {
             out.push_back(r);
             continue;
@@ -169,9 +169,9 @@ std::vector<RunResult> collapse_ensembles(const std::vector<RunResult>& runs) {
 std::vector<bool> ensemble_members(const std::vector<RunResult>& runs) {
     std::map<RunSpec, int> sizes;
     for (const RunResult& r : runs)
-        if (seed_of(r.spec)) ++sizes[group_of(r.spec)];
+        if (seed_of(r.spec)) ++sizes[ensemble_of(r.spec)];
     std::vector<bool> out;
-    for (const RunResult& r : runs) out.push_back(seed_of(r.spec) && sizes[group_of(r.spec)] >= 2);
+    for (const RunResult& r : runs) out.push_back(seed_of(r.spec) && sizes[ensemble_of(r.spec)] >= 2);
     return out;
 }
 

@@ -32,6 +32,9 @@ ParamOverrides ensemble_member(const ParamOverrides& overrides, double base_seed
 // snapshots are the first member's. Other runs pass through unchanged.
 std::vector<RunResult> collapse_ensembles(const std::vector<RunResult>& runs);
 
+// The ensemble a run belongs to: its spec without the seed (the members differ in it only).
+RunSpec ensemble_of(RunSpec spec);
+
 // Whether each run is a member of an ensemble of two or more, and its seed.
 std::vector<bool> ensemble_members(const std::vector<RunResult>& runs);
 double member_seed(const RunSpec& spec);  // NaN without one

@@ -1,5 +1,6 @@
 // `rotbench compare BASE NEW`: every metric of the runs found in both directories, and the
 // regressions among them (harness/gate/compare.hpp); exit 1 if there is one.
+#include "harness/analysis/ensemble.hpp"
 #include "harness/cli/outputs.hpp"
 #include "harness/cli/verb.hpp"
 #include "harness/gate/compare.hpp"
@@ -51,7 +52,7 @@ public:
         tolerances.error = parse_positive(error_, "--error-tolerance");
         tolerances.order = parse_positive(order_, "--order-tolerance");
         tolerances.cost = parse_positive(cost_, "--cost-tolerance");
-        const auto base = read_results(base_), now = read_results(now_);
+        const auto base = collapse_ensembles(read_results(base_)), now = collapse_ensembles(read_results(now_));
         check_distinct_outputs({{"--junit", junit_},
                                 {"--summary", summary_},
                                 {"--out (its summary.json)", out_.empty() ? std::filesystem::path() : std::filesystem::path(out_) / "summary.json"},

@@ -1,6 +1,7 @@
 // `rotbench gate FILE`: the claims and checks of a gate file (docs/gate.md), run by the same
 // engine as `run` and judged from the results; exit 1 if any check fails or a check expected
 // to fail passes.
+#include "harness/analysis/ensemble.hpp"
 #include "harness/cli/outputs.hpp"
 #include "harness/cli/sweep_command.hpp"
 #include "harness/cli/verb.hpp"
@@ -85,7 +86,7 @@ public:
                                   {"gate", "gate.csv", slice.shard ? slice_files : std::vector<std::string>{"gate.csv", "summary.json", "runs.jsonl", "schemes.json", "results.csv", "runs.csv"},
                                    overwrite_, how.resuming.has_value()});
 
-        const std::vector<RunResult> baseline = baseline_.empty() ? std::vector<RunResult>{} : read_results(baseline_);
+        const std::vector<RunResult> baseline = baseline_.empty() ? std::vector<RunResult>{} : collapse_ensembles(read_results(baseline_));
         std::vector<RunResult> runs;
         if (!results_.empty()) {
             runs = read_results(results_);
@@ -132,7 +133,7 @@ public:
         if (dir) {
             dir->write("gate.csv", gate_csv(result));
             dir->write("summary.json", json);
-            write_run_files(*dir, result.runs);
+            write_run_files(*dir, result.runs, result.runs);  // a gate runs no ensemble
             Journal::discard(dir->path());
         }
         // Last: a runner's file that takes the empty check but not the text loses only itself.

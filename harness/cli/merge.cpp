@@ -1,4 +1,5 @@
-// `rotbench merge DIR... --out OUT`: the outputs of the unsharded run from its N slices.
+// `rotbench merge DIR... --out OUT`: the outputs of the unsharded run from its N slices, or of
+// whole runs joined (an ensemble grown in parts).
 #include "harness/cli/outputs.hpp"
 #include "harness/cli/verb.hpp"
 #include "harness/store/shard.hpp"
@@ -10,7 +11,7 @@ namespace {
 class MergeVerb final : public Verb {
 public:
     void add_options(CLI::App& command) override {
-        command.add_option("DIRS", dirs_, "the shard directories, one per K")->required();
+        command.add_option("DIRS", dirs_, "the shard directories, one per K; or whole run directories to join")->required();
         command.add_option("--out", out_, "output directory")->required();
         command.add_flag("--overwrite", overwrite_, "replace results already in --out");
         add_tolerance_option(command, tolerances_);
@@ -18,7 +19,9 @@ public:
     int run(const Invocation& how) override {
         const std::vector<std::filesystem::path> dirs(dirs_.begin(), dirs_.end());
         parse_tolerances(tolerances_);
-        const auto results = merge_shards(dirs);
+        // The slices of one sharded command, or whole runs (an ensemble grown in parts, other schemes).
+        const bool slices = std::filesystem::exists(std::filesystem::symlink_status(dirs.front() / "shard.csv"));
+        const auto results = slices ? merge_shards(dirs) : join_runs(dirs);
         const OutputDir out = OutputDir::open(out_, {"run", "results.csv", run_files, overwrite_});
         SchemeInfos recorded;  // what each slice ran: merge needs no --plugin to describe a plug-in's runs
         for (const auto& dir : dirs) recorded.merge(read_schemes(dir));
@@ -32,7 +35,7 @@ private:
     bool overwrite_ = false;
 };
 
-const RegisterVerb<MergeVerb> registration("merge", "combine the outputs of run --shard K/N into one run's outputs");
+const RegisterVerb<MergeVerb> registration("merge", "combine the outputs of run --shard K/N, or of whole runs, into one run's outputs");
 
 }  // namespace
 }  // namespace rotbench

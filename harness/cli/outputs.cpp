@@ -46,10 +46,10 @@ AnalysisOptions analysis_options(const std::vector<std::string>& tolerances, con
 
 void write_outputs(const OutputDir& dir, const std::vector<RunResult>& all_runs, const std::string& command_line,
                    const AnalysisOptions& options, std::ostream& out, const SchemeInfos& recorded) {
-    // An ensemble's members go to ensemble.csv; the other files hold their means and intervals.
+    // An ensemble's members are kept in the store and ensemble.csv; the tables hold their means and intervals.
     if (const std::string members = ensemble_csv(all_runs); !members.empty()) dir.write("ensemble.csv", members);
     const std::vector<RunResult> results = collapse_ensembles(all_runs);
-    write_run_files(dir, results, recorded);
+    write_run_files(dir, all_runs, results, recorded);
     const Analysis analysis = analyse(describe(results, recorded), options);
     export_analysis(dir, analysis);
     dir.write("report.md", markdown_report(analysis, command_line, dir, all_cores()));

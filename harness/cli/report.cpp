@@ -1,5 +1,6 @@
 // `rotbench report DIR`: report.md and its plots again, from the run store a run left in DIR.
 #include "harness/analysis/analysis.hpp"
+#include "harness/analysis/ensemble.hpp"
 #include "harness/cli/outputs.hpp"
 #include "harness/cli/verb.hpp"
 #include "harness/store/output_files.hpp"
@@ -22,7 +23,7 @@ public:
         const AnalysisOptions options = analysis_options(tolerances_, stability_.empty() ? dir_ : stability_);
         if (!stability_.empty() && options.stability.empty())
             throw InputError("--stability " + stability_ + ": no stability.csv there (rotbench stability --out writes one)");
-        const Analysis analysis = analyse(describe(read_results(dir_), read_schemes(dir_)), options);
+        const Analysis analysis = analyse(describe(collapse_ensembles(read_results(dir_)), read_schemes(dir_)), options);
         std::vector<std::string> written = analysis_files;
         written.push_back("report.md");
         const OutputDir out = OutputDir::open(out_.empty() ? dir_ : out_, {"run", "", written, overwrite_});

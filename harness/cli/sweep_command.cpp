@@ -49,7 +49,7 @@ Executor make_executor(const Invocation& how, const OutputDir* dir, ExecOptions 
 }
 
 void write_slice(const OutputDir& dir, const PlanSlice& slice, const std::vector<RunResult>& results, std::ostream& out) {
-    write_run_files(dir, results);
+    write_run_files(dir, results, results);  // the members of an ensemble: collapsed once merged
     write_run_series(results, dir);
     dir.write("shard.csv", shard_csv(slice.plan_id, slice.shard->index, slice.shard->count, results, slice.indices, slice.plan_size));
     out << fmt::format("wrote shard {}/{} ({} of {} runs) to {}; combine the shards with rotbench merge\n", slice.shard->index,

@@ -70,13 +70,14 @@ std::string run_store(const std::vector<RunResult>& runs) {
     return text;
 }
 
-void write_run_files(const OutputDir& dir, const std::vector<RunResult>& runs, const SchemeInfos& recorded) {
+void write_run_files(const OutputDir& dir, const std::vector<RunResult>& runs, const std::vector<RunResult>& tables,
+                     const SchemeInfos& recorded) {
     std::vector<std::string> schemes;
     for (const auto& r : runs) schemes.push_back(r.spec.scheme);
     dir.write("schemes.json", schemes_json(describe_schemes(schemes, recorded)));
     dir.write("runs.jsonl", run_store(runs));
-    dir.write("results.csv", results_csv(runs));
-    dir.write("runs.csv", runs_csv(runs));
+    dir.write("results.csv", results_csv(tables));
+    dir.write("runs.csv", runs_csv(tables));
 }
 
 namespace {

@@ -22,14 +22,17 @@ std::string results_csv(const std::vector<RunResult>& results);
 // (harness/store/csv.hpp).
 std::string runs_csv(const std::vector<RunResult>& results);
 
-// runs.jsonl, the run store of an output folder: one record per run (harness/store/run_record.hpp),
-// indexed from 0 in the order of results.csv and runs.csv, which are exports of it.
+// runs.jsonl, the run store of an output folder: one record per run as it was made (an
+// ensemble's members each; harness/store/run_record.hpp), indexed from 0.
 std::string run_store(const std::vector<RunResult>& runs);
-// Writes runs.jsonl, results.csv and runs.csv of the runs, and schemes.json: their schemes as
-// registered in this process, else as `recorded` (harness/store/scheme_record.hpp).
-void write_run_files(const OutputDir& dir, const std::vector<RunResult>& runs, const SchemeInfos& recorded = {});
+// Writes runs.jsonl of `runs` and schemes.json (their schemes as registered in this process,
+// else as `recorded`, harness/store/scheme_record.hpp), and results.csv and runs.csv of
+// `tables`: the same runs with each ensemble's members collapsed (harness/analysis/ensemble.hpp),
+// whose rows follow the order of the tables.
+void write_run_files(const OutputDir& dir, const std::vector<RunResult>& runs, const std::vector<RunResult>& tables,
+                     const SchemeInfos& recorded = {});
 
-// Reads a folder's runs back from its store, as they were made. InputError when the store is
+// Reads a folder's runs back from its store, as they were made (an ensemble's members each). InputError when the store is
 // missing, cut, or not rotbench's (an id that is not one, a step out of range); `name` stands
 // for the file in messages.
 std::vector<RunResult> read_results(const std::filesystem::path& dir);

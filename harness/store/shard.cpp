@@ -66,11 +66,9 @@ std::vector<RunResult> merge_shards(const std::vector<std::filesystem::path>& di
     std::map<std::size_t, RunResult> merged;  // by plan index; never sized by a number read from a file
     for (const auto& dir : dirs) {
         const std::string name = (dir / "shard.csv").string();
-        if (!std::filesystem::exists(std::filesystem::symlink_status(dir / "shard.csv")) &&
-            std::filesystem::exists(std::filesystem::symlink_status(dir / "runs.jsonl")))
-            throw InputError(dir.string() + " is a whole run, not a slice of `rotbench run --shard K/N`: merge joins the slices of "
-                             "one sharded command. To add schemes to a run, run it again with all of them (--schemes A,B) into a "
-                             "new --out; to set two runs side by side, `rotbench compare BASE NOW`");
+        if (!std::filesystem::exists(std::filesystem::symlink_status(dir / "shard.csv")))
+            throw InputError(dir.string() + " is a whole run, not a slice of `rotbench run --shard K/N`: merge joins either the "
+                             "slices of one sharded command or whole runs, not both");
         const auto rows = read_csv(dir / "shard.csv", "plan_id,shard,shards,plan_size,plan_index,scene,scheme,dt");
         const auto results = read_results(dir);
         if (rows.size() != results.size())
@@ -123,6 +121,27 @@ std::vector<RunResult> merge_shards(const std::vector<std::filesystem::path>& di
     if (merged.size() != plan_size) throw InputError("merge: the shards do not cover the whole plan");
     std::vector<RunResult> out;
     for (auto& [index, r] : merged) out.push_back(std::move(r));
+    return out;
+}
+
+std::vector<RunResult> join_runs(const std::vector<std::filesystem::path>& dirs) {
+    std::vector<RunResult> out;
+    std::map<RunSpec, std::filesystem::path> from;
+    for (const auto& dir : dirs) {
+        if (std::filesystem::exists(std::filesystem::symlink_status(dir / "shard.csv")))
+            throw InputError(dir.string() + " is a slice of `rotbench run --shard K/N`: merge joins either the slices of one "
+                             "sharded command or whole runs, not both");
+        for (auto& r : read_results(dir)) {
+            RunSpec key = r.spec;
+            key.timed = true;  // a timed and an untimed run compute the same
+            if (const auto [it, fresh] = from.try_emplace(key, dir); !fresh)
+                throw InputError(fmt::format("merge: the {} run of {} on {} at dt = {}, with the same parameters, is in both {} and "
+                                             "{}: a run is joined once (an ensemble grown in parts takes other seeds: --set SCENE.seed=N)",
+                                             kind_name(r.spec.kind), r.spec.scheme, r.spec.scene, format_number(r.spec.dt),
+                                             it->second.string(), dir.string()));
+            out.push_back(std::move(r));
+        }
+    }
     return out;
 }
 

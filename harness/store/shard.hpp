@@ -38,4 +38,9 @@ std::string shard_csv(const std::string& plan_id, int shard, int shards, const s
 // slices of one sweep (same plan_id and N), each exactly once.
 std::vector<RunResult> merge_shards(const std::vector<std::filesystem::path>& dirs);
 
+// The runs of whole run directories (no shard.csv), in the order given: e.g. an ensemble grown in
+// parts (seeds 1-5, then 6-10), whose members join into one ensemble once collapsed. InputError
+// when a run (its scene, scheme, kind, dt, duration and parameters, seed included) is in two.
+std::vector<RunResult> join_runs(const std::vector<std::filesystem::path>& dirs);
+
 }  // namespace rotbench
