@@ -14,9 +14,8 @@ namespace {
 
 const std::string scene_id = "particle_contact";
 
-double relative_error(const RunResult& r) { return r.value(metric::omega_err_max) / r.value(metric::omega_ref_max); }
 
-bool stable(const RunResult& r) { return r.failure.empty() && r.value(metric::unstable) == 0.0 && std::isfinite(relative_error(r)); }
+bool stable(const RunResult& r) { return r.failure.empty() && r.value(metric::unstable) == 0.0 && std::isfinite(relative_omega_error(r)); }
 
 struct Outcome {
     bool recommended = false;
@@ -48,7 +47,7 @@ Outcome advise_one(Executor& executor, const StabilityProbe& probe, const ParamO
     const auto add_rung = [&](double dt) {
         ladder.push_back(run_at(dt, true));
         const RunResult& r = ladder.back();
-        if (stable(r) && relative_error(r) < advice_asymptotic_error) points.push_back({r.spec.dt, relative_error(r)});
+        if (stable(r) && relative_omega_error(r) < advice_asymptotic_error) points.push_back({r.spec.dt, relative_omega_error(r)});
         if (std::isfinite(r.value(metric::ns_per_step))) ns.push_back(r.value(metric::ns_per_step));
     };
     for (int k = 0; k < advice_ladder_rungs && t_end / (dt0 / std::pow(2.0, k)) <= advice_max_steps; ++k) add_rung(dt0 / std::pow(2.0, k));
@@ -63,12 +62,12 @@ Outcome advise_one(Executor& executor, const StabilityProbe& probe, const ParamO
     // No rung meets the tolerance: extrapolate from the finest with the observed order, run
     // there, and again from that run, until a measured rung meets it; the dt is then always
     // interpolated between two measured rungs, never taken on trust from an extrapolation.
-    const auto meets = [&](const RunResult& r) { return stable(r) && relative_error(r) <= tolerance; };
+    const auto meets = [&](const RunResult& r) { return stable(r) && relative_omega_error(r) <= tolerance; };
     // A scheme whose limit is far above the steps its accuracy needs (zvw_corrected on a stiff
     // contact) ends its ladder before its error is asymptotic: halve on, while the error still
     // falls, until the order can be fitted (a run costs no more than advice_max_steps).
     while (std::none_of(ladder.begin(), ladder.end(), meets) && !fit_order(points).sufficient && stable(ladder.back()) && ladder.size() >= 2 &&
-           relative_error(ladder.back()) < relative_error(ladder[ladder.size() - 2]) && t_end / (ladder.back().spec.dt / 2) <= advice_max_steps)
+           relative_omega_error(ladder.back()) < relative_omega_error(ladder[ladder.size() - 2]) && t_end / (ladder.back().spec.dt / 2) <= advice_max_steps)
         add_rung(ladder.back().spec.dt / 2);
     std::string extrapolated;
     for (int search = 0; search < advice_searches && std::none_of(ladder.begin(), ladder.end(), meets); ++search) {
@@ -77,7 +76,7 @@ Outcome advise_one(Executor& executor, const StabilityProbe& probe, const ParamO
         if (!stable(finest) || !fit.sufficient || fit.order < 0.5)
             return {false, o.r, fmt::format("does not reach {:g} on the ladder down to {:.3g} s, and its error has no order to "
                                             "extrapolate with", tolerance, finest.spec.dt)};
-        const double next = finest.spec.dt * std::pow(advice_error_margin * tolerance / relative_error(finest), 1.0 / fit.order);
+        const double next = finest.spec.dt * std::pow(advice_error_margin * tolerance / relative_omega_error(finest), 1.0 / fit.order);
         if (t_end / next > advice_max_steps)
             return {false, o.r, fmt::format("needs dt = {:.3g} s, {:.3g} steps over {:g} s", next, t_end / next, t_end)};
         extrapolated = fmt::format(" (after extrapolating with order {:.2f})", fit.order);
@@ -87,12 +86,12 @@ Outcome advise_one(Executor& executor, const StabilityProbe& probe, const ParamO
     for (std::size_t k = 0; k < ladder.size() && std::isnan(dt); ++k) {
         if (!meets(ladder[k])) continue;
         if (k == 0) {
-            dt = dt0, o.r.predicted_error = relative_error(ladder[0]), o.r.how = "stability-bound";
+            dt = dt0, o.r.predicted_error = relative_omega_error(ladder[0]), o.r.how = "stability-bound";
         } else if (const RunResult &c = ladder[k - 1], &f = ladder[k]; !stable(c)) {
-            dt = f.spec.dt, o.r.predicted_error = relative_error(f), o.r.how = "measured";
+            dt = f.spec.dt, o.r.predicted_error = relative_omega_error(f), o.r.how = "measured";
         } else {
-            const double target = std::max(advice_error_margin * tolerance, relative_error(f));
-            const double lc = std::log(relative_error(c)), lf = std::log(relative_error(f));
+            const double target = std::max(advice_error_margin * tolerance, relative_omega_error(f));
+            const double lc = std::log(relative_omega_error(c)), lf = std::log(relative_omega_error(f));
             const double w = (std::log(target) - lf) / (lc - lf);
             dt = std::exp(std::log(f.spec.dt) + w * (std::log(c.spec.dt) - std::log(f.spec.dt)));
             o.r.predicted_error = target, o.r.how = "interpolated" + extrapolated;
@@ -104,11 +103,11 @@ Outcome advise_one(Executor& executor, const StabilityProbe& probe, const ParamO
         return {false, o.r, fmt::format("needs dt = {:.3g} s, {:.3g} steps over {:g} s", dt, t_end / dt, t_end)};
     o.r.dt = dt;
     o.r.stability_ratio = limit / probe.predicted_limit();
-    for (const auto& r : ladder) o.r.ladder.push_back({r.spec.dt, stable(r) ? relative_error(r) : NAN});
+    for (const auto& r : ladder) o.r.ladder.push_back({r.spec.dt, stable(r) ? relative_omega_error(r) : NAN});
     if (const OrderFit fit = fit_order(points); fit.sufficient) o.r.order = fit.order, o.r.order_lo = fit.order_lo, o.r.order_hi = fit.order_hi;
     // The part of the error that is not the rotation scheme's: the exact rotation flow at the same dt.
     if (const RunResult exact = run_at(dt, false, advice_exact_rotation); stable(exact)) {
-        o.r.exact_rotation_error = relative_error(exact);
+        o.r.exact_rotation_error = relative_omega_error(exact);
         o.r.contact_share = o.r.exact_rotation_error / o.r.predicted_error;
     }
     o.r.limited_by = o.r.how == "stability-bound"                ? "stability"
@@ -121,7 +120,7 @@ Outcome advise_one(Executor& executor, const StabilityProbe& probe, const ParamO
         const RunResult v = run_at(dt, false);
         o.r.verified = true;
         o.r.verified_stable = stable(v);
-        o.r.verified_error = o.r.verified_stable ? relative_error(v) : NAN;
+        o.r.verified_error = o.r.verified_stable ? relative_omega_error(v) : NAN;
     }
     o.recommended = true;
     return o;

@@ -18,7 +18,6 @@ double seconds_at(const RunResult& r, double dt) { return r.value(metric::ns_per
 
 }  // namespace
 
-double relative_omega_error(const RunResult& r) { return r.value(metric::omega_err_max) / r.value(metric::omega_ref_max); }
 
 LargestDt largest_dt(const std::vector<const RunResult*>& runs, const OrderRow& order, double tolerance) {
     LargestDt a{order.scene, order.scheme, tolerance, "never", NAN, NAN, NAN, ""};

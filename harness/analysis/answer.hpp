@@ -29,9 +29,6 @@ struct LargestDt {
     std::string limit_from;  // where dt_limit comes from
 };
 
-// Relative error of a run: omega_err_max / omega_ref_max (NaN without a reference).
-double relative_omega_error(const RunResult& r);
-
 // From the runs of one scheme on one scene and the fit of its omega_err_max.
 LargestDt largest_dt(const std::vector<const RunResult*>& runs, const OrderRow& order, double tolerance);
 

@@ -13,8 +13,6 @@
 namespace rotbench {
 namespace {
 
-std::string g(double v) { return fmt::format("{:.3g}", v); }
-
 // A relative change as a reader takes it: a percentage up to twice or half, a factor beyond.
 std::string change_text(double change) {
     const double ratio = 1.0 + change;
@@ -47,7 +45,7 @@ Judgement judge_baseline_accuracy(const RunPairs& runs, const BaselineTolerances
             const double change = before > 0 ? (after - before) / before : INFINITY;
             if (before > order_floor && change < best) {  // an improvement, said as one
                 best = change;
-                improved = fmt::format("{} at dt = {} fell from {} to {} ({})", m, g(n->spec.dt), g(before), g(after), change_text(change));
+                improved = fmt::format("{} at dt = {} fell from {} to {} ({})", m, figure(n->spec.dt), figure(before), figure(after), change_text(change));
             }
             // The claims' metric beyond the tolerance takes the headline from any other.
             const bool claimed = m == metric::omega_err_max && change > t.error;
@@ -57,8 +55,8 @@ Judgement judge_baseline_accuracy(const RunPairs& runs, const BaselineTolerances
             j.measured = change;
             // From round-off, a ratio says nothing: the error is said to have left it.
             worst = before > order_floor
-                        ? fmt::format("{} at dt = {} went from {} to {} ({})", m, g(n->spec.dt), g(before), g(after), change_text(change))
-                        : fmt::format("{} at dt = {} went from round-off ({}) to {}", m, g(n->spec.dt), g(before), g(after));
+                        ? fmt::format("{} at dt = {} went from {} to {} ({})", m, figure(n->spec.dt), figure(before), figure(after), change_text(change))
+                        : fmt::format("{} at dt = {} went from round-off ({}) to {}", m, figure(n->spec.dt), figure(before), figure(after));
         }
     j.passed = j.measured <= t.error;
     if (j.measured == 0 && best < -t.error) worst = "improved: " + improved;
@@ -73,7 +71,7 @@ Judgement judge_baseline_stability(const RunPairs& runs, const BaselineTolerance
     for (const auto& [b, n] : runs) {
         if (b->value(metric::unstable) == 0.0 && n->value(metric::unstable) == 1.0) {
             j.passed = false;
-            j.message = fmt::format("the run at dt = {} is unstable now ({})", g(n->spec.dt), n->failure);
+            j.message = fmt::format("the run at dt = {} is unstable now ({})", figure(n->spec.dt), n->failure);
             return j;
         }
         // A failed run (or an ensemble every member of which failed) has no errors to compare:
@@ -81,7 +79,7 @@ Judgement judge_baseline_stability(const RunPairs& runs, const BaselineTolerance
         const double members_before = b->value(metric::ensemble_failed), members_now = n->value(metric::ensemble_failed);
         if ((b->failure.empty() && !n->failure.empty()) || members_now > members_before) {
             j.passed = false;
-            j.message = fmt::format("the run at dt = {} fails now{} ({})", g(n->spec.dt),
+            j.message = fmt::format("the run at dt = {} fails now{} ({})", figure(n->spec.dt),
                                     std::isfinite(members_now) ? fmt::format(", {:g} of its members against {:g}", members_now, members_before)
                                                                : "",
                                     n->failure.empty() ? "some members failed" : n->failure);
@@ -91,7 +89,7 @@ Judgement judge_baseline_stability(const RunPairs& runs, const BaselineTolerance
         if (std::isfinite(lb) && ln < lb * (1.0 - t.error)) {
             j.passed = false;
             j.measured = ln / lb - 1.0;
-            j.message = fmt::format("the stability limit fell from {} s to {} s", g(lb), g(ln));
+            j.message = fmt::format("the stability limit fell from {} s to {} s", figure(lb), figure(ln));
             return j;
         }
     }

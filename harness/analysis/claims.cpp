@@ -8,14 +8,15 @@
 #include <fmt/format.h>
 
 namespace rotbench {
-namespace {
 
-std::string g(double v) { return fmt::format("{:.3g}", v); }
+std::string figure(double v) { return fmt::format("{:.3g}", v); }
+
+namespace {
 
 // The first failed run, as a judgement's message; empty when none failed.
 std::string failed_run(const RunRefs& runs) {
     for (const RunResult* r : runs)
-        if (!r->failure.empty()) return fmt::format("the run at dt = {} failed: {}", g(r->spec.dt), r->failure);
+        if (!r->failure.empty()) return fmt::format("the run at dt = {} failed: {}", figure(r->spec.dt), r->failure);
     return "";
 }
 
@@ -27,7 +28,7 @@ std::vector<OrderPoint> points_of(const RunRefs& runs, std::string_view name = m
 
 std::string errors_text(const std::vector<OrderPoint>& points) {
     std::string errors;
-    for (const auto& p : points) errors += (errors.empty() ? "" : ", ") + g(p.error);
+    for (const auto& p : points) errors += (errors.empty() ? "" : ", ") + figure(p.error);
     return errors;
 }
 
@@ -63,7 +64,7 @@ Judgement bounded_energy(double early, double late, const std::string& where) {
     j.message = fmt::format(
         "the largest energy error grew {:.3g}x {} ({} to {}); bound sqrt({:g}) = {:.2f} (a linear drift grows "
         "it {:g}x, a bounded error about 1x)",
-        j.measured, where, g(early), g(late), energy_horizon, j.bound, energy_horizon);
+        j.measured, where, figure(early), figure(late), energy_horizon, j.bound, energy_horizon);
     return j;
 }
 
@@ -99,7 +100,7 @@ Judgement judge_order(const RunRefs& ladder, int claimed) {
         j.message = fmt::format(
             "no order could be fitted (errors {} from dt {} to {}: fewer than 3 points in an asymptotic range); "
             "claimed order {}",
-            errors_text(points), g(points.front().dt), g(points.back().dt), claimed);
+            errors_text(points), figure(points.front().dt), figure(points.back().dt), claimed);
         return j;
     }
     double spread = 0;
@@ -110,7 +111,7 @@ Judgement judge_order(const RunRefs& ladder, int claimed) {
     const bool reaches = fit.order_lo - spread <= claimed && claimed <= fit.order_hi + spread;
     j.passed = close && reaches;
     j.message = fmt::format("observed order {:.2f} [{:.2f}, {:.2f}] of {} over dt {} ... {} ({} points), claimed {}: {}", fit.order,
-                            fit.order_lo, fit.order_hi, metric::omega_err_max, g(fit.dt_max), g(fit.dt_min), fit.points, claimed,
+                            fit.order_lo, fit.order_hi, metric::omega_err_max, figure(fit.dt_max), figure(fit.dt_min), fit.points, claimed,
                             j.passed ? fmt::format("within {}, and the interval reaches it", order_tolerance)
                             : !close ? fmt::format("more than {} away", order_tolerance)
                                      : fmt::format("the interval, widened by the local orders' spread {:.2f}, does not reach it", spread));
@@ -132,11 +133,11 @@ Judgement judge_sanity_order(const RunRefs& ladder) {
         j.message = fmt::format(
             "observed order {:.2f} [{:.2f}, {:.2f}] over dt {} ... {}, required at least {} (a consistent scheme "
             "converges)",
-            fit.order, fit.order_lo, fit.order_hi, g(fit.dt_max), g(fit.dt_min), sanity_min_order);
+            fit.order, fit.order_lo, fit.order_hi, figure(fit.dt_max), figure(fit.dt_min), sanity_min_order);
         return j;
     }
     j.message = fmt::format("{} does not fall as a power of dt (errors {} from dt {} to {}), required an order of at least {}",
-                            metric::omega_err_max, errors_text(points), g(points.front().dt), g(points.back().dt), sanity_min_order);
+                            metric::omega_err_max, errors_text(points), figure(points.front().dt), figure(points.back().dt), sanity_min_order);
     return j;
 }
 
@@ -155,14 +156,14 @@ Judgement judge_min_order(const RunRefs& ladder, const std::string& name, double
         j.measured = fit.order, j.lo = fit.order_lo, j.hi = fit.order_hi;
         j.passed = fit.order >= min_order;
         j.message = fmt::format("observed order {:.2f} [{:.2f}, {:.2f}] of {} over dt {} ... {} ({} points), required >= {}", fit.order,
-                                fit.order_lo, fit.order_hi, name, g(fit.dt_max), g(fit.dt_min), fit.points, g(min_order));
+                                fit.order_lo, fit.order_hi, name, figure(fit.dt_max), figure(fit.dt_min), fit.points, figure(min_order));
     } else if (worst <= round_off) {
         j.measured = INFINITY;
         j.passed = true;
-        j.message = fmt::format("exact to round-off: every {} is at most {} (<= round_off {})", name, g(worst), g(round_off));
+        j.message = fmt::format("exact to round-off: every {} is at most {} (<= round_off {})", name, figure(worst), figure(round_off));
     } else {
         j.message = fmt::format("no order: {} does not fall as a power of dt (errors {} from dt {} to {}), required >= {}", name,
-                                errors_text(points), g(points.front().dt), g(points.back().dt), g(min_order));
+                                errors_text(points), figure(points.front().dt), figure(points.back().dt), figure(min_order));
     }
     return j;
 }
@@ -173,15 +174,15 @@ Judgement judge_exact(const RunRefs& runs) {
         j.message = fmt::format(
             "error {} at dt = {} against the round-off bound {} (N = {} steps x 10 eps, times |w_ref| for the "
             "angular velocity): {}",
-            g(j.measured), g(run->spec.dt), g(j.bound), run->value(metric::steps), j.passed ? "round-off only" : "more than round-off");
+            figure(j.measured), figure(run->spec.dt), figure(j.bound), run->value(metric::steps), j.passed ? "round-off only" : "more than round-off");
     return j;
 }
 
 Judgement judge_momentum(const RunRefs& runs) {
     auto [j, run] = within_round_off(runs, {metric::momentum_drift_max});
     if (run)
-        j.message = fmt::format("momentum drift {} at dt = {}, bound (4 N + 16) eps = {} for N = {} steps: {}", g(j.measured),
-                                g(run->spec.dt), g(j.bound), run->value(metric::steps), j.passed ? "kept to round-off" : "not kept");
+        j.message = fmt::format("momentum drift {} at dt = {}, bound (4 N + 16) eps = {} for N = {} steps: {}", figure(j.measured),
+                                figure(run->spec.dt), figure(j.bound), run->value(metric::steps), j.passed ? "kept to round-off" : "not kept");
     return j;
 }
 
@@ -194,11 +195,11 @@ Judgement judge_same_map(const RunRefs& runs, const std::string& counterpart) {
     auto [j, run] = within_round_off(runs, {metric::counterpart_omega_diff_max, metric::counterpart_angle_diff_max});
     if (run && std::isnan(j.measured)) {
         j.passed = false;
-        j.message = fmt::format("no difference from {} measured at dt = {} (the client file names no counterpart?)", counterpart, g(run->spec.dt));
+        j.message = fmt::format("no difference from {} measured at dt = {} (the client file names no counterpart?)", counterpart, figure(run->spec.dt));
     } else if (run) {
         j.message = fmt::format("largest difference from {} {} at dt = {} against the round-off bound {} (N = {} steps x 10 eps, "
                                 "times |w_ref| for the angular velocity): {}",
-                                counterpart, g(j.measured), g(run->spec.dt), g(j.bound), run->value(metric::steps),
+                                counterpart, figure(j.measured), figure(run->spec.dt), figure(j.bound), run->value(metric::steps),
                                 j.passed ? "the same map" : "another map");
     }
     return j;
@@ -216,7 +217,7 @@ Judgement judge_sanity_momentum(const RunResult& run) {
     j.message = fmt::format(
         "momentum drift {} at dt = {}, required at most {:g} % (a scheme that does not let w' precess loses far "
         "more)",
-        g(j.measured), g(run.spec.dt), 100 * sanity_max_momentum_drift);
+        figure(j.measured), figure(run.spec.dt), 100 * sanity_max_momentum_drift);
     return j;
 }
 
@@ -224,12 +225,12 @@ Judgement judge_bounded_energy(const RunResult& run) {
     if (!run.failure.empty()) {
         Judgement j;
         j.bound = energy_growth_bound;
-        j.message = fmt::format("the run at dt = {} failed: {}", g(run.spec.dt), run.failure);
+        j.message = fmt::format("the run at dt = {} failed: {}", figure(run.spec.dt), run.failure);
         return j;
     }
     return bounded_energy(
         run.value(metric::energy_drift_first), run.value(metric::energy_drift_horizon),
-        fmt::format("from {} s to {} s at dt = {}", g(run.spec.t_end), g(energy_horizon * run.spec.t_end), g(run.spec.dt)));
+        fmt::format("from {} s to {} s at dt = {}", figure(run.spec.t_end), figure(energy_horizon * run.spec.t_end), figure(run.spec.dt)));
 }
 
 Judgement judge_reversal(const RunResult& run) {
@@ -245,7 +246,7 @@ Judgement judge_reversal(const RunResult& run) {
     j.message = fmt::format(
         "after {} steps forward and {} back with -dt = {}, {} rad and {} (relative) from the start; bound 2 N x 4 "
         "eps = {}",
-        n, n, g(run.spec.dt), g(run.value(metric::reversal_angle)), g(run.value(metric::reversal_omega)), g(j.bound));
+        n, n, figure(run.spec.dt), figure(run.value(metric::reversal_angle)), figure(run.value(metric::reversal_omega)), figure(j.bound));
     return j;
 }
 
@@ -254,8 +255,8 @@ Judgement judge_stability_margin(const RunResult& search, double min_ratio) {
     j.bound = min_ratio;
     j.measured = search.value(metric::stability_ratio);
     j.passed = j.measured >= min_ratio;
-    j.message = fmt::format("measured limit {} s = {} x Peng's prediction {} s, required >= {}", g(search.value(metric::dt_empirical)),
-                            g(j.measured), g(search.value(metric::dt_peng)), g(min_ratio));
+    j.message = fmt::format("measured limit {} s = {} x Peng's prediction {} s, required >= {}", figure(search.value(metric::dt_empirical)),
+                            figure(j.measured), figure(search.value(metric::dt_peng)), figure(min_ratio));
     return j;
 }
 
@@ -270,7 +271,7 @@ Judgement judge_cost_ratio(const RunResult& cost, double max_ratio) {
     j.message = std::isnan(j.measured)
                     ? "no timing (the run failed)"
                     : fmt::format("CPU time per step {} x direct's (95 % interval {}-{}, {} pairs timed in turn), required <= {}{}",
-                                  g(j.measured), g(j.lo), g(j.hi), cost.value(metric::timing_repeats), g(max_ratio),
+                                  figure(j.measured), figure(j.lo), figure(j.hi), cost.value(metric::timing_repeats), figure(max_ratio),
                                   j.passed ? "" : ": the whole interval is above");
     return j;
 }

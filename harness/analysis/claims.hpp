@@ -16,6 +16,9 @@ namespace rotbench {
 
 using RunRefs = std::vector<const RunResult*>;
 
+// A figure in a judgement's message: three significant digits.
+std::string figure(double v);
+
 // What a judge found. `message` states the value (with its interval), the bound, and the
 // bound's origin; a caller prefixes it with the claim and the scene.
 struct Judgement {

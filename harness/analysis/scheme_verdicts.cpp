@@ -20,7 +20,7 @@ double finest_relative_error(const ResultSet& set, const std::string& scene, con
         if (r.spec.scene == scene && r.spec.scheme == scheme && std::isfinite(r.value(metric::omega_err_max)) &&
             (!finest || r.spec.dt < finest->spec.dt))
             finest = &r;
-    return finest ? finest->value(metric::omega_err_max) / finest->value(metric::omega_ref_max) : NAN;
+    return finest ? relative_omega_error(*finest) : NAN;
 }
 
 OrderVerdict order_verdict(const ResultSet& set, const std::vector<OrderRow>& orders, const std::string& scheme, bool with_torque) {

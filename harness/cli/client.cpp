@@ -86,7 +86,7 @@ private:
                                r.value(metric::client_cpu_seconds));
         if (r.has(metric::omega_err_max))
             how.out << fmt::format("  relative angular-velocity error {:.3g}, orientation error {:.3g} rad\n",
-                                   r.value(metric::omega_err_max) / r.value(metric::omega_ref_max), r.value(metric::orientation_err_max));
+                                   relative_omega_error(r), r.value(metric::orientation_err_max));
         if (r.has(metric::counterpart_omega_diff_max))
             how.out << fmt::format("  against {}: largest |dw| {:.3g} rad/s, angle {:.3g} rad\n", client.counterpart,
                                    r.value(metric::counterpart_omega_diff_max), r.value(metric::counterpart_angle_diff_max));

@@ -1,5 +1,7 @@
 #include "harness/core/run.hpp"
 
+#include "harness/core/metrics.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
@@ -55,5 +57,7 @@ RunKind kind_from_name(const std::string& name) {
     }
     throw InputError("unknown run kind '" + name + "'; valid kinds: " + valid);
 }
+
+double relative_omega_error(const RunResult& r) { return r.value(metric::omega_err_max) / r.value(metric::omega_ref_max); }
 
 }  // namespace rotbench

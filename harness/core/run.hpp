@@ -85,4 +85,8 @@ std::int64_t step_count(double t_end, double dt);
 // for a blow-up. The run stops at that step (fail_step, fail_time); its error metrics are NaN.
 inline constexpr double blowup_energy_factor = 1e6;
 
+// The relative angular-velocity error every tolerance is on: omega_err_max / omega_ref_max, the
+// largest error over the run against the largest |w_ref| (NaN without a reference).
+double relative_omega_error(const RunResult& r);
+
 }  // namespace rotbench

@@ -17,9 +17,7 @@ RunSpec key_of(RunSpec s) {
     return s;
 }
 
-std::string g(double v) { return fmt::format("{:.3g}", v); }
-
-std::string run_name(const RunSpec& s) { return fmt::format("{} {} {} dt={}", s.scene, s.scheme, kind_name(s.kind), g(s.dt)); }
+std::string run_name(const RunSpec& s) { return fmt::format("{} {} {} dt={}", s.scene, s.scheme, kind_name(s.kind), figure(s.dt)); }
 
 Verdict verdict(const std::string& id, const std::string& scene, const std::string& scheme, const std::string& where,
                 const Judgement& j) {
@@ -76,7 +74,7 @@ Comparison compare_runs(const std::vector<RunResult>& base, const std::vector<Ru
     // A run of BASE that NEW lacks is a regression: what it showed is no longer shown.
     std::map<Pair, std::vector<std::string>> missing;
     for (const auto& r : base)
-        if (!seen.count(key_of(r.spec))) missing[{r.spec.scene, r.spec.scheme}].push_back(fmt::format("{} dt={}", kind_name(r.spec.kind), g(r.spec.dt)));
+        if (!seen.count(key_of(r.spec))) missing[{r.spec.scene, r.spec.scheme}].push_back(fmt::format("{} dt={}", kind_name(r.spec.kind), figure(r.spec.dt)));
     for (const auto& [pair, runs] : missing) {
         Judgement j;
         j.measured = static_cast<double>(runs.size());

@@ -13,8 +13,6 @@
 namespace rotbench {
 namespace {
 
-std::string g(double v) { return fmt::format("{:.3g}", v); }
-
 using Runs = RunRefs;
 
 // The judgement as the verdict's figures, its message after `name`.
@@ -67,7 +65,7 @@ void judge_check(Verdict& v, const GateCheck& c, const Runs& runs) {
             return;
         }
         v.passed = v.measured <= c.bound;
-        v.message = fmt::format("{}: {} = {} at dt = {}, required <= {}", name, c.metric, g(v.measured), g(r.spec.dt), g(c.bound));
+        v.message = fmt::format("{}: {} = {} at dt = {}, required <= {}", name, c.metric, figure(v.measured), figure(r.spec.dt), figure(c.bound));
     }
 }
 
