@@ -236,16 +236,14 @@ std::string anchor(const std::string& heading) {
 
 std::string link(const std::string& text, const std::string& heading) { return "[" + text + "](#" + anchor(heading) + ")"; }
 
-}  // namespace
 
-std::string markdown_report(const Analysis& a, const std::string& command_line, const OutputDir& dir, const ParallelWork& parallel) {
+// The opening paragraph: what ran, how much of it failed, and the provenance; a warning for a
+// plug-in built otherwise than the built-in schemes.
+std::string header(const Analysis& a, const std::vector<std::string>& scenes, const std::vector<std::string>& schemes,
+                   const std::string& command_line) {
     const ResultSet& set = a.set;
-    const std::vector<RunResult>& results = set.runs;
-    const auto scenes = unique_in_order(results, &RunSpec::scene);
-    const auto schemes = unique_in_order(results, &RunSpec::scheme);
-
     const Provenance p = provenance();
-    const auto failed = std::count_if(results.begin(), results.end(), [](const RunResult& r) { return r.value(metric::unstable) != 0.0; });
+    const auto failed = std::count_if(set.runs.begin(), set.runs.end(), [](const RunResult& r) { return r.value(metric::unstable) != 0.0; });
     std::string md = "# rotbench report\n\n";
     // The count the progress lines gave: the horizon runs of the energy verdicts are runs too.
     const std::string horizon_runs = set.horizons.empty() ? "" : fmt::format(" (besides {} horizon runs for the energy verdicts)", set.horizons.size());
@@ -253,24 +251,39 @@ std::string markdown_report(const Analysis& a, const std::string& command_line, 
         "{} runs of {} scheme{} on {} scene{}, {} of them unstable or failed{}: which scheme meets which error at what dt, "
         "and at what cost. Errors are in rad/s (angular velocity) and rad (orientation), drifts relative; the cost figure "
         "is `ns_per_step` (section {}). rotbench {} (commit {}), {} {}, flags `{}`, on {}; generated {} {} UTC by `{}`.\n\n",
-        results.size(), schemes.size(), schemes.size() == 1 ? "" : "s", scenes.size(), scenes.size() == 1 ? "" : "s", failed, horizon_runs, link("Verdicts", "Verdicts"), p.version, p.commit, p.compiler,
-        p.build_type, p.flags, p.cpu, p.date.substr(0, 10), p.date.substr(11, 5), command_line);
+        set.runs.size(), schemes.size(), schemes.size() == 1 ? "" : "s", scenes.size(), scenes.size() == 1 ? "" : "s", failed, horizon_runs,
+        link("Verdicts", "Verdicts"), p.version, p.commit, p.compiler, p.build_type, p.flags, p.cpu, p.date.substr(0, 10), p.date.substr(11, 5),
+        command_line);
     for (const auto& [id, info] : set.schemes)  // the header's flags are rotbench's own: say where a plug-in's differ
         if (!info.plugin_path.empty() && info.plugin_build != ROTBENCH_PLUGIN_BUILD)
             md += fmt::format("**Warning: `{}` comes from a plug-in built {}** (`{}`; the built-in schemes: {}): its cost does not "
                               "compare with theirs. Rebuild it with `rotbench_add_scheme()` and its default flags.\n\n",
                               id, info.plugin_build, info.plugin_path, ROTBENCH_PLUGIN_BUILD);
+    return md;
+}
 
-    md += recommendation_section(a.recommendation, a.verdicts);
+std::string contents(const std::vector<std::string>& scenes) {
     const std::string answer_heading = "The answer: the largest dt for a tolerance";
-    md += "## Contents\n\n- " + link("Verdicts", "Verdicts") + " · " + link("The answer", answer_heading) + " · " +
-          link("Stability limits", "Stability limits") + " · " + link("Cost", cost_heading) + "\n- Scenes:";
+    std::string md = "## Contents\n\n- " + link("Verdicts", "Verdicts") + " · " + link("The answer", answer_heading) + " · " +
+                     link("Stability limits", "Stability limits") + " · " + link("Cost", cost_heading) + "\n- Scenes:";
     for (std::size_t i = 0; i < scenes.size(); ++i)
         md += (i ? "," : "") + std::string(" ") + link("`" + scenes[i] + "`", "Scene `" + scenes[i] + "`");
-    md += "\n- " + link(answer_details_heading, answer_details_heading) + " · " + link("Seed Table 1", "Seed Table 1 reproduced") + " · " + link("Energy against time", "Energy against time") +
-          " · " + link("Schemes", "Schemes: sources, readings, and what each claims") + " · " +
-          link("Metrics and the order fit", "Metrics and the order fit") + "\n\n";
+    md += "\n- " + link(answer_details_heading, answer_details_heading) + " · " + link("Seed Table 1", "Seed Table 1 reproduced") + " · " +
+          link("Energy against time", "Energy against time") + " · " + link("Schemes", "Schemes: sources, readings, and what each claims") +
+          " · " + link("Metrics and the order fit", "Metrics and the order fit") + "\n\n";
+    return md;
+}
 
+}  // namespace
+
+std::string markdown_report(const Analysis& a, const std::string& command_line, const OutputDir& dir, const ParallelWork& parallel) {
+    const ResultSet& set = a.set;
+    const std::vector<RunResult>& results = set.runs;
+    const auto scenes = unique_in_order(results, &RunSpec::scene);
+    const auto schemes = unique_in_order(results, &RunSpec::scheme);
+    std::string md = header(a, scenes, schemes, command_line);
+    md += recommendation_section(a.recommendation, a.verdicts);
+    md += contents(scenes);
     md += verdict_section(set, a.verdicts, !a.stability.empty());
     md += clients_section(a.counterparts);
     md += answer_section(set, a.answers, a.tolerances);
