@@ -143,6 +143,67 @@ std::string stability_section(const std::vector<StabilityRow>& rows, const Resul
     return md;
 }
 
+namespace {
+
+// A spinning scene's table: per scheme, the least dt w_max over the spin rates against Peng's.
+std::string spin_table(const std::vector<StabilityRow>& rows, const std::vector<const StabilityRow*>& list) {
+    std::string md = "| scheme | kind | measured dt w_max (rad) | Peng dt w_max (rad) | measured / Peng |\n|---|---|---:|---:|---:|\n";
+    for (const auto& scheme : schemes_of(rows)) {
+        const StabilityRow* least = nullptr;  // the smallest dt w_max over the spin rates
+        bool failed = false;
+        for (const auto* r : list) {
+            failed = failed || (r->scheme == scheme && !r->failure.empty());
+            if (r->scheme == scheme && r->failure.empty() && (!least || r->dt_empirical * r->omega_max < least->dt_empirical * least->omega_max)) least = r;
+        }
+        if (!least) {
+            if (failed) md += fmt::format("| {} | failed | — | — | — |\n", scheme);
+            continue;
+        }
+        const double m = least->dt_empirical * least->omega_max, p = least->dt_peng * least->omega_max;
+        md += fmt::format("| {} | {} | {} | {:.4g} | {} |\n", scheme, stability_kind(*least),
+                          std::isinf(m) ? std::string("none found") : fmt::format("{:.4g}", m), p,
+                          std::isinf(m) ? std::string("∞") : fmt::format("{:.3f}", m / p));
+    }
+    return md;
+}
+
+// A contact scene's table: per scheme and damping ratio (at most five), the measured limit over Peng's.
+std::string damping_table(const std::vector<StabilityRow>& rows, const std::vector<const StabilityRow*>& list) {
+    std::vector<double> keys;
+    for (const auto* r : list)
+        if (std::find(keys.begin(), keys.end(), r->zeta) == keys.end()) keys.push_back(r->zeta);
+    if (keys.size() > 5) keys.resize(5);  // at most 7 columns; every value is in stability.csv
+    std::string md = "| scheme |";
+    for (double z : keys) md += fmt::format(" zeta = {:g} |", z);
+    md += "\n|---|";
+    for (std::size_t i = 0; i < keys.size(); ++i) md += "---:|";
+    md += "\n| *Peng's dt (s)* |";
+    for (double z : keys) {
+        const auto it = std::find_if(list.begin(), list.end(), [&](const StabilityRow* r) { return r->zeta == z; });
+        md += fmt::format(" *{:.3g}* |", (*it)->dt_peng);
+    }
+    md += "\n";
+    for (const auto& scheme : schemes_of(rows)) {
+        std::string line = "| " + scheme + " |";
+        bool any = false;
+        for (double z : keys) {
+            const auto it = std::find_if(list.begin(), list.end(), [&](const StabilityRow* r) { return r->scheme == scheme && r->zeta == z; });
+            if (it == list.end()) { line += " — |"; continue; }
+            any = true;
+            if (!(*it)->failure.empty()) { line += " failed |"; continue; }
+            const double ratio = (*it)->dt_empirical / (*it)->dt_peng;
+            const std::string kind = stability_kind(**it) == "sharp" ? "" : " (" + stability_kind(**it) + ")";
+            line += std::isinf(ratio) ? " ∞" + kind + " |"
+                    : ratio >= 1.0   ? fmt::format(" {:.3f}{} |", ratio, kind)
+                                     : fmt::format(" **{:.3f}**{} |", ratio, kind);
+        }
+        if (any) md += line + "\n";
+    }
+    return md + "\nMeasured / Peng; **bold** where Peng's dt is above the measured limit (unsafe); (weak): see above.\n\n";
+}
+
+}  // namespace
+
 std::string stability_summary(const std::vector<StabilityRow>& rows, const ResultSet& set, const OutputDir& dir) {
     if (rows.empty())
         return "## Stability limits\n\nNo stability study here: `rotbench stability --out DIR` writes `stability.csv` beside "
@@ -161,61 +222,11 @@ std::string stability_summary(const std::vector<StabilityRow>& rows, const Resul
     }
     for (const auto& scene : scene_order) {
         const auto& list = by_scene[scene];
-        const bool spin = list.front()->omega_max > 0;
-        std::vector<double> keys;
-        for (const auto* r : list) {
-            const double k = spin ? r->omega_max : r->zeta;
-            if (std::find(keys.begin(), keys.end(), k) == keys.end()) keys.push_back(k);
-        }
-        if (keys.size() > 5) keys.resize(5);  // at most 7 columns; every value is in stability.csv
         md += fmt::format("### `{}`\n\n", scene);
-        if (spin) {
-            md += "| scheme | kind | measured dt w_max (rad) | Peng dt w_max (rad) | measured / Peng |\n|---|---|---:|---:|---:|\n";
-            for (const auto& scheme : schemes_of(rows)) {
-                const StabilityRow* least = nullptr;  // the smallest dt w_max over the spin rates
-                bool failed = false;
-                for (const auto* r : list) {
-                    failed = failed || (r->scheme == scheme && !r->failure.empty());
-                    if (r->scheme == scheme && r->failure.empty() && (!least || r->dt_empirical * r->omega_max < least->dt_empirical * least->omega_max)) least = r;
-                }
-                if (!least) {
-                    if (failed) md += fmt::format("| {} | failed | — | — | — |\n", scheme);
-                    continue;
-                }
-                const double m = least->dt_empirical * least->omega_max, p = least->dt_peng * least->omega_max;
-                md += fmt::format("| {} | {} | {} | {:.4g} | {} |\n", scheme, stability_kind(*least),
-                                  std::isinf(m) ? std::string("none found") : fmt::format("{:.4g}", m), p,
-                                  std::isinf(m) ? std::string("∞") : fmt::format("{:.3f}", m / p));
-            }
+        if (list.front()->omega_max > 0) {
+            md += spin_table(rows, list);
         } else {
-            md += "| scheme |";
-            for (double z : keys) md += fmt::format(" zeta = {:g} |", z);
-            md += "\n|---|";
-            for (std::size_t i = 0; i < keys.size(); ++i) md += "---:|";
-            md += "\n";
-            md += "| *Peng's dt (s)* |";
-            for (double z : keys) {
-                const auto it = std::find_if(list.begin(), list.end(), [&](const StabilityRow* r) { return r->zeta == z; });
-                md += fmt::format(" *{:.3g}* |", (*it)->dt_peng);
-            }
-            md += "\n";
-            for (const auto& scheme : schemes_of(rows)) {
-                std::string line = "| " + scheme + " |";
-                bool any = false;
-                for (double z : keys) {
-                    const auto it = std::find_if(list.begin(), list.end(), [&](const StabilityRow* r) { return r->scheme == scheme && r->zeta == z; });
-                    if (it == list.end()) { line += " — |"; continue; }
-                    any = true;
-                    if (!(*it)->failure.empty()) { line += " failed |"; continue; }
-                    const double ratio = (*it)->dt_empirical / (*it)->dt_peng;
-                    const std::string kind = stability_kind(**it) == "sharp" ? "" : " (" + stability_kind(**it) + ")";
-                    line += std::isinf(ratio) ? " ∞" + kind + " |"
-                            : ratio >= 1.0   ? fmt::format(" {:.3f}{} |", ratio, kind)
-                                             : fmt::format(" **{:.3f}**{} |", ratio, kind);
-                }
-                if (any) md += line + "\n";
-            }
-            md += "\nMeasured / Peng; **bold** where Peng's dt is above the measured limit (unsafe); (weak): see above.\n\n";
+            md += damping_table(rows, list);
             std::vector<const StabilityRow*> finished;
             for (const auto* r : list)
                 if (r->failure.empty()) finished.push_back(r);
