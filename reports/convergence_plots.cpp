@@ -23,6 +23,44 @@ std::string error_label(const std::string& name) {
     return m && !m->label.empty() ? std::string(m->label) : name;
 }
 
+namespace {
+
+using Points = std::map<std::string, std::vector<std::pair<double, double>>>;  // each scheme's (dt, error)
+
+// A curve another one of the panel covers (the same errors to 1e-9) says so in the key, on a
+// line of its own (a key entry without a sample): two ids side by side overrun the key's column.
+std::string same_curve_key(const Points& points, const std::vector<std::string>& panel, std::size_t i) {
+    const auto curve = [&](const std::string& scheme) { return points.count(scheme) ? points.at(scheme) : Points::mapped_type{}; };
+    const auto mine = curve(panel[i]);
+    for (std::size_t j = 0; j < i; ++j) {
+        const auto theirs = curve(panel[j]);
+        if (!mine.empty() && mine.size() == theirs.size() &&
+            std::equal(mine.begin(), mine.end(), theirs.begin(), [](const auto& a, const auto& b) {
+                return a.first == b.first && std::abs(a.second - b.second) <= 1e-9 * std::abs(b.second);
+            }))
+            return fmt::format(", keyentry with lines lt nodraw title '(= {})'", panel[j]);
+    }
+    return "";
+}
+
+// The numbers of the reference slopes 1, 2 and 4 through the middle of the errors, inside the
+// frame where each leaves it (its right end, or the top or bottom of the errors).
+std::string slope_labels(double lo, double hi, double e_lo, double e_hi) {
+    const double dt_mid = std::sqrt(lo * hi), e_mid = std::sqrt(e_lo * e_hi);
+    std::string out;
+    for (int p : {1, 2, 4}) {
+        const double y_top = e_hi * 2, y_bottom = e_lo / 2;  // inside the y range, [e_lo / 3, e_hi * 3]
+        double x = hi, y = e_mid * std::pow(hi / dt_mid, p);
+        if (y > y_top) x = dt_mid * std::pow(y_top / e_mid, 1.0 / p), y = y_top;
+        if (y < y_bottom) x = dt_mid * std::pow(y_bottom / e_mid, 1.0 / p), y = y_bottom;
+        out += fmt::format("set label {0} '{0}' at {1},{2} right offset -0.4,0.6 font ',10' tc rgb 'gray20' front\n", p,
+                           format_number(x), format_number(y));
+    }
+    return out;
+}
+
+}  // namespace
+
 std::string convergence_plots(const std::string& scene, const std::vector<const RunResult*>& runs, const ResultSet& set,
                               const OutputDir& dir, const std::vector<std::string>& best) {
     const std::string metric = plotted_error(runs);
@@ -33,7 +71,7 @@ std::string convergence_plots(const std::string& scene, const std::vector<const 
     // One block per scheme: dt, error, cpu seconds (finite errors only).
     std::string data = fmt::format("# {}: dt {} cpu_seconds, one block per scheme: {}\n", scene, metric, fmt::join(schemes, " "));
     double lo = INFINITY, hi = 0, e_lo = INFINITY, e_hi = 0, c_lo = INFINITY, c_hi = 0;
-    std::map<std::string, std::vector<std::pair<double, double>>> points;  // each scheme's (dt, error)
+    Points points;
     for (const auto& scheme : schemes) {
         for (const RunResult* r : runs) {
             const double e = r->value(metric);
@@ -52,30 +90,15 @@ std::string convergence_plots(const std::string& scene, const std::vector<const 
 
     const auto panels = family_panels(set, schemes, best);
     const auto index_of = [&](const std::string& s) { return std::find(schemes.begin(), schemes.end(), s) - schemes.begin(); };
-    // A curve another one of the panel covers (the same errors to 1e-9) says so in the key, on a
-    // line of its own (a key entry without a sample): two ids side by side overrun the key's column.
-    const auto same_as = [&](const std::vector<std::string>& panel, std::size_t i) -> std::string {
-        const auto& mine = points[panel[i]];
-        for (std::size_t j = 0; j < i; ++j) {
-            const auto& theirs = points[panel[j]];
-            if (!mine.empty() && mine.size() == theirs.size() &&
-                std::equal(mine.begin(), mine.end(), theirs.begin(), [](const auto& a, const auto& b) {
-                    return a.first == b.first && std::abs(a.second - b.second) <= 1e-9 * std::abs(b.second);
-                }))
-                return fmt::format(", keyentry with lines lt nodraw title '(= {})'", panel[j]);
-        }
-        return "";
-    };
     const auto series = [&](std::size_t p, const std::string& columns) {
         std::string line = "plot ";
         for (std::size_t i = 0; i < panels[p].schemes.size(); ++i)
             line += fmt::format("{}file index {} using {} with linespoints {} title '{}'{}", i ? ", \\\n     " : "",
                                 index_of(panels[p].schemes[i]), columns, scheme_style(set, panels[p].schemes[i], i),
-                                panels[p].schemes[i], same_as(panels[p].schemes, i));
+                                panels[p].schemes[i], same_curve_key(points, panels[p].schemes, i));
         return line;
     };
-    // Reference slopes 1, 2 and 4 through the middle of the errors, over the data's dt, numbered
-    // inside the frame where each leaves it (its right end, or the top or bottom of the errors).
+    // Reference slopes 1, 2 and 4 through the middle of the errors, over the data's dt.
     const double dt_mid = std::sqrt(lo * hi), e_mid = std::sqrt(e_lo * e_hi);
     const std::string common = fmt::format(
         "set logscale xy\nset format x '%g'\nset format y '%.0e'\nset grid\nfile = 'runs_{}.dat'\n", scene);
@@ -85,14 +108,7 @@ std::string convergence_plots(const std::string& scene, const std::vector<const 
         "set xrange [lo/1.5:hi*1.5]\nset yrange [{5}/3:{6}*3]\nset samples 2\n",  // a line in log-log: its ends draw it
         error_label(metric), format_number(e_mid), format_number(dt_mid), format_number(lo), format_number(hi),
         format_number(e_lo), format_number(e_hi));
-    for (int p : {1, 2, 4}) {
-        const double y_top = e_hi * 2, y_bottom = e_lo / 2;  // inside the y range, [e_lo / 3, e_hi * 3]
-        double x = hi, y = e_mid * std::pow(hi / dt_mid, p);
-        if (y > y_top) x = dt_mid * std::pow(y_top / e_mid, 1.0 / p), y = y_top;
-        if (y < y_bottom) x = dt_mid * std::pow(y_bottom / e_mid, 1.0 / p), y = y_bottom;
-        conv_setup += fmt::format("set label {0} '{0}' at {1},{2} right offset -0.4,0.6 font ',10' tc rgb 'gray20' front\n", p,
-                                  format_number(x), format_number(y));
-    }
+    conv_setup += slope_labels(lo, hi, e_lo, e_hi);
     const std::string conv = panel_grid_script(
         gnuplot_output(fmt::format("convergence_{}.svg", scene)), fmt::format("{}: {} against dt", scene, metric), conv_setup,
         panels, [&](std::size_t p) {
