@@ -38,6 +38,41 @@ std::string version_text() {
                        build_info::compiler, build_info::build_type, build_info::flags);
 }
 
+// The exception being handled, as the exit status and the one line a user reads: 0 for help,
+// 2 for bad input (nothing was started), 3 for what stopped the work once started (a full disk,
+// memory), 4 for a bug of rotbench's. Called from a catch block only.
+int exit_status(const CLI::App& app, std::ostream& out, std::ostream& err) {
+    try {
+        throw;
+    } catch (const CLI::CallForHelp&) {
+        out << app.help();
+        return 0;
+    } catch (const CLI::ParseError& e) {
+        if (e.get_exit_code() == 0) {
+            out << app.help();
+            return 0;
+        }
+        err << "rotbench: " << e.what() << " (see rotbench --help)\n";
+        return 2;
+    } catch (const InputError& e) {
+        err << "rotbench: " << e.what() << "\n";
+        return 2;
+    } catch (const std::filesystem::filesystem_error& e) {  // an output path that is not a writable directory
+        err << "rotbench: " << e.what() << "\n";
+        return 2;
+    } catch (const OutputError& e) {  // a full disk once the work had started: what is finished is kept
+        err << "rotbench: " << e.what() << "\n";
+        return 3;
+    } catch (const std::bad_alloc&) {  // the machine's or the batch system's limit, met once the work had started
+        err << "rotbench: out of memory: what was asked for outgrew what this process may have (ulimit -v, the machine); "
+               "ask for less (--samples, --t-end, --jobs, --ensemble)\n";
+        return 3;
+    } catch (const std::exception& e) {  // a bug of rotbench's: said in one line, not an abort
+        err << "rotbench: internal error: " << e.what() << "\n";
+        return 4;
+    }
+}
+
 }  // namespace
 
 int run_cli_arguments(const std::vector<std::string>& arguments, std::ostream& out, std::ostream& err,
@@ -103,32 +138,8 @@ int run_cli_arguments(const std::vector<std::string>& arguments, std::ostream& o
         const Invocation invocation{arguments, command_line, out, err, resuming, load};
         if (!verb.defers_plugins()) load();
         return verb.run(invocation);
-    } catch (const CLI::CallForHelp&) {
-        out << app.help();
-        return 0;
-    } catch (const CLI::ParseError& e) {
-        if (e.get_exit_code() == 0) {
-            out << app.help();
-            return 0;
-        }
-        err << "rotbench: " << e.what() << " (see rotbench --help)\n";
-        return 2;
-    } catch (const InputError& e) {
-        err << "rotbench: " << e.what() << "\n";
-        return 2;
-    } catch (const std::filesystem::filesystem_error& e) {  // an output path that is not a writable directory
-        err << "rotbench: " << e.what() << "\n";
-        return 2;
-    } catch (const OutputError& e) {  // a full disk once the work had started: what is finished is kept
-        err << "rotbench: " << e.what() << "\n";
-        return 3;
-    } catch (const std::bad_alloc&) {  // the machine's or the batch system's limit, met once the work had started
-        err << "rotbench: out of memory: what was asked for outgrew what this process may have (ulimit -v, the machine); "
-               "ask for less (--samples, --t-end, --jobs, --ensemble)\n";
-        return 3;
-    } catch (const std::exception& e) {  // a bug of rotbench's: said in one line, not an abort
-        err << "rotbench: internal error: " << e.what() << "\n";
-        return 4;
+    } catch (...) {
+        return exit_status(app, out, err);
     }
 }
 

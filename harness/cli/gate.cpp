@@ -38,6 +38,31 @@ std::string step_summary() {
     return step;
 }
 
+// --results DIR: the runs a gate made before, each where this gate's plan makes it.
+std::vector<RunResult> read_gate_results(const std::string& dir, const GatePlan& plan) {
+    std::vector<RunResult> runs = read_results(dir);
+    if (runs.size() != plan.runs.size())
+        throw InputError("--results " + dir + ": holds " + std::to_string(runs.size()) + " runs, the gate makes " +
+                         std::to_string(plan.runs.size()));
+    for (std::size_t i = 0; i < runs.size(); ++i)
+        if (runs[i].spec.scene != plan.runs[i].scene || runs[i].spec.scheme != plan.runs[i].scheme ||
+            runs[i].spec.kind != plan.runs[i].kind || runs[i].spec.dt != plan.runs[i].dt)
+            throw InputError("--results " + dir + ": run " + std::to_string(i + 1) + " is not the one this gate makes there");
+    return runs;
+}
+
+// --baseline DIR: compare's verdicts against the baseline's runs of the schemes this gate ran (a
+// scheme left out by --schemes is not missing).
+void add_baseline_verdicts(GateResult& result, const std::vector<RunResult>& baseline, const GatePlan& plan, const std::string& where) {
+    std::vector<RunResult> selected;
+    for (const auto& r : baseline)
+        if (std::any_of(plan.runs.begin(), plan.runs.end(), [&](const RunSpec& s) { return s.scheme == r.spec.scheme; }))
+            selected.push_back(r);
+    const Comparison c = compare_runs(selected, result.runs, {}, where);
+    result.verdicts.insert(result.verdicts.end(), c.verdicts.begin(), c.verdicts.end());
+    result.warnings.insert(result.warnings.end(), c.notes.begin(), c.notes.end());
+}
+
 class GateVerb final : public Verb {
 public:
     void add_options(CLI::App& command) override {
@@ -89,14 +114,7 @@ public:
         const std::vector<RunResult> baseline = baseline_.empty() ? std::vector<RunResult>{} : collapse_ensembles(read_results(baseline_));
         std::vector<RunResult> runs;
         if (!results_.empty()) {
-            runs = read_results(results_);
-            if (runs.size() != plan.runs.size())
-                throw InputError("--results " + results_ + ": holds " + std::to_string(runs.size()) + " runs, the gate makes " +
-                                 std::to_string(plan.runs.size()));
-            for (std::size_t i = 0; i < runs.size(); ++i)
-                if (runs[i].spec.scene != plan.runs[i].scene || runs[i].spec.scheme != plan.runs[i].scheme ||
-                    runs[i].spec.kind != plan.runs[i].kind || runs[i].spec.dt != plan.runs[i].dt)
-                    throw InputError("--results " + results_ + ": run " + std::to_string(i + 1) + " is not the one this gate makes there");
+            runs = read_gate_results(results_, plan);
         } else {
             ExecOptions options{.jobs = jobs_, .timed_alone = true, .verb = "gate"};
             isolation_.apply(options.run);
@@ -111,16 +129,7 @@ public:
         }
 
         GateResult result = judge_gate(file, plan, std::move(runs));
-        if (!baseline_.empty()) {
-            // The baseline's runs of the schemes this gate ran: a scheme left out by --schemes is not missing.
-            std::vector<RunResult> selected;
-            for (const auto& r : baseline)
-                if (std::any_of(plan.runs.begin(), plan.runs.end(), [&](const RunSpec& s) { return s.scheme == r.spec.scheme; }))
-                    selected.push_back(r);
-            const Comparison c = compare_runs(selected, result.runs, {}, baseline_);
-            result.verdicts.insert(result.verdicts.end(), c.verdicts.begin(), c.verdicts.end());
-            result.warnings.insert(result.warnings.end(), c.notes.begin(), c.notes.end());
-        }
+        if (!baseline_.empty()) add_baseline_verdicts(result, baseline, plan, baseline_);
         how.out << gate_summary(result);
         if (std::getenv("GITHUB_ACTIONS") && std::string(std::getenv("GITHUB_ACTIONS")) == "true") how.out << gate_annotations(result);
         const std::string json = gate_summary_json(result, file_, provenance());
