@@ -53,14 +53,13 @@ std::string xml_text(const std::string& text) { return xml(text, false); }
 std::string xml_attribute(const std::string& text) { return xml(text, true); }
 
 std::string actions_message(const std::string& text) {
-    std::string out;
-    for (char c : valid_utf8(text)) {
-        if (c == '%') out += "%25";
-        else if (c == '\r') out += "%0D";
-        else if (c == '\n') out += "%0A";
-        else out += c;
-    }
-    return out;
+    return map_code_points(text, [](std::string& out, char32_t cp, const std::string& bytes) {
+        if (cp == '%') out += "%25";
+        else if (cp == '\r') out += "%0D";
+        else if (cp == '\n') out += "%0A";
+        else if (cp < 0x20 || (cp >= 0x7F && cp < 0xA0)) out += fmt::format("\\x{:02X}", static_cast<unsigned>(cp));  // as terminal_line
+        else out += bytes;
+    });
 }
 
 std::string actions_property(const std::string& text) {
@@ -71,6 +70,13 @@ std::string actions_property(const std::string& text) {
         else out += c;
     }
     return out;
+}
+
+std::string terminal_line(const std::string& text) {
+    return map_code_points(text, [](std::string& out, char32_t cp, const std::string& bytes) {
+        if (cp < 0x20 || (cp >= 0x7F && cp < 0xA0)) out += fmt::format("\\x{:02X}", static_cast<unsigned>(cp));
+        else out += bytes;
+    });
 }
 
 std::string markdown_cell(const std::string& text) {

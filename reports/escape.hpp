@@ -15,10 +15,15 @@ std::string valid_utf8(const std::string& text);
 std::string xml_text(const std::string& text);
 std::string xml_attribute(const std::string& text);
 
-// A GitHub Actions workflow command's message (% and line breaks encoded) and property
-// value (also : and ,).
+// A GitHub Actions workflow command's message (% and line breaks encoded, other control
+// characters written as terminal_line writes them) and property value (also : and ,).
 std::string actions_message(const std::string& text);
 std::string actions_property(const std::string& text);
+
+// One line for a terminal or a log a CI runner parses: valid UTF-8 with every control character
+// (C0 with tab and line breaks, DEL, C1) written as \xNN, so that no text quoted in it starts a
+// line of its own (a workflow command) or moves the cursor.
+std::string terminal_line(const std::string& text);
 
 // A Markdown table cell: one line, no unescaped '|'.
 std::string markdown_cell(const std::string& text);

@@ -45,10 +45,10 @@ std::pair<std::string, std::string> file_and_line(const std::string& location) {
 
 std::string gate_summary(const GateResult& result) {
     std::string out;
-    for (const auto& w : result.warnings) out += "WARNING " + w + "\n";
+    for (const auto& w : result.warnings) out += "WARNING " + terminal_line(w) + "\n";
     for (const auto& v : result.verdicts) {
-        out += fmt::format("{} {}/{}: {}\n", tag(v), v.of.scene, v.of.scheme, v.message);
-        if (v.of.expected_to_fail) out += fmt::format("     expected to fail: {}\n", v.of.expected_reason);
+        out += terminal_line(fmt::format("{} {}/{}: {}", tag(v), v.of.scene, v.of.scheme, v.message)) + "\n";
+        if (v.of.expected_to_fail) out += "     expected to fail: " + terminal_line(v.of.expected_reason) + "\n";
     }
     out += counts(result);
     std::vector<std::string> failing;

@@ -210,6 +210,24 @@ TEST_CASE("gate: the CI outputs (JUnit, summary.json, gate.csv, Markdown, annota
     fs::remove_all(dir);
 }
 
+TEST_CASE("gate: a check's name cannot put a line of its own on stdout (a workflow command) or a control character") {
+    const fs::path dir = fresh_dir("gate_injection");
+    fs::create_directories(dir);
+    write(dir / "g.toml", "[[check]]\nname = \"x\\n::error file=a.cpp,line=1::injected\\u001b[2J\"\nscene = \"asymmetric_free\"\n"
+                          "schemes = [\"direct\"]\nmax_error = 0.05\ndt = 0.05\nwhy = \"y\\r\\n::warning::also\"\n");
+    const Cli r = binary({"gate", (dir / "g.toml").string()}, {"GITHUB_ACTIONS=true"});
+    CHECK(r.status == 1);
+    std::istringstream out(r.out);
+    for (std::string line; std::getline(out, line);) {
+        INFO(line);
+        CHECK(line.rfind("::error file=a.cpp", 0) != 0);
+        CHECK(line.rfind("::warning::also", 0) != 0);
+        CHECK(line.find('\x1b') == std::string::npos);
+    }
+    CHECK_THAT(r.out, Catch::Contains("x\\x0A::error file=a.cpp,line=1::injected\\x1B[2J"));
+    fs::remove_all(dir);
+}
+
 TEST_CASE("gate: a step summary that cannot take the text loses only itself") {
     const fs::path dir = fresh_dir("gate_step_full");
     fs::create_directories(dir);

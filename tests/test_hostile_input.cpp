@@ -69,7 +69,7 @@ TEST_CASE("hostile inputs: an argument with a line break is refused in one line,
     const fs::path dir = fresh_dir("line_break");
     const std::string out = (dir / "o\nut").string();
     refused({"run", "--scenes", "dipole_top", "--schemes", "direct", "--dt", "1e-2", "--out", out},
-            "an argument holds a line break: '" + (dir / "o").string() + "\\nut'", dir);
+            "an argument holds a line break: '" + (dir / "o").string() + "\\x0Aut'", dir);
     refused({"run", "--scenes", "dipole_top\r", "--out", (dir / "o").string()}, "line break", dir);
 }
 

@@ -1,5 +1,7 @@
 #include "harness/cli/cli.hpp"
 
+#include "reports/escape.hpp"
+
 #include "harness/cli/verb.hpp"
 #include "harness/exec/machine.hpp"
 #include "harness/store/output_files.hpp"
@@ -26,13 +28,6 @@ void refuse_empty_values(const CLI::App& app) {
     for (const auto* sub : app.get_subcommands()) refuse_empty_values(*sub);
 }
 
-// A line break shown as \n, so that the message stays one line.
-std::string one_line_text(const std::string& text) {
-    std::string shown;
-    for (const char c : text) shown += c == '\n' ? std::string("\\n") : c == '\r' ? std::string("\\r") : std::string(1, c);
-    return shown;
-}
-
 std::string version_text() {
     return fmt::format("rotbench {} (commit {})\ncompiler {}, {} build\nflags {}\n", build_info::version, build_info::commit,
                        build_info::compiler, build_info::build_type, build_info::flags);
@@ -52,23 +47,23 @@ int exit_status(const CLI::App& app, std::ostream& out, std::ostream& err) {
             out << app.help();
             return 0;
         }
-        err << "rotbench: " << e.what() << " (see rotbench --help)\n";
+        err << "rotbench: " << terminal_line(e.what()) << " (see rotbench --help)\n";
         return 2;
     } catch (const InputError& e) {
-        err << "rotbench: " << e.what() << "\n";
+        err << "rotbench: " << terminal_line(e.what()) << "\n";
         return 2;
     } catch (const std::filesystem::filesystem_error& e) {  // an output path that is not a writable directory
-        err << "rotbench: " << e.what() << "\n";
+        err << "rotbench: " << terminal_line(e.what()) << "\n";
         return 2;
     } catch (const OutputError& e) {  // a full disk once the work had started: what is finished is kept
-        err << "rotbench: " << e.what() << "\n";
+        err << "rotbench: " << terminal_line(e.what()) << "\n";
         return 3;
     } catch (const std::bad_alloc&) {  // the machine's or the batch system's limit, met once the work had started
         err << "rotbench: out of memory: what was asked for outgrew what this process may have (ulimit -v, the machine); "
                "ask for less (--samples, --t-end, --jobs, --ensemble)\n";
         return 3;
     } catch (const std::exception& e) {  // a bug of rotbench's: said in one line, not an abort
-        err << "rotbench: internal error: " << e.what() << "\n";
+        err << "rotbench: internal error: " << terminal_line(e.what()) << "\n";
         return 4;
     }
 }
@@ -107,7 +102,7 @@ int run_cli_arguments(const std::vector<std::string>& arguments, std::ostream& o
         // one line: an argument with a line break is refused before anything is written.
         for (const auto& a : arguments)
             if (a.find_first_of("\n\r") != std::string::npos)
-                throw InputError("an argument holds a line break: '" + one_line_text(a) + "'; rotbench takes none");
+                throw InputError("an argument holds a line break: '" + a + "'; rotbench takes none");  // shown as \x0A
         if (argc > 1 && argv[1][0] != '-' && !verbs.count(argv[1]))
             throw InputError(std::string("unknown command '") + argv[1] + "'; valid commands: " + join(names, ", "));
         app.parse(argc, argv.data());
@@ -127,12 +122,13 @@ int run_cli_arguments(const std::vector<std::string>& arguments, std::ostream& o
             for (const auto& plugin : plugins) {
                 const auto ids = load_plugin(plugin);
                 if (internal) continue;
-                err << "rotbench: loaded " << join(ids, ", ") << " from " << plugin << "\n";
-                if (const std::string w = build_warning(*plugin_of(ids.front())); !w.empty()) err << "rotbench: warning: " << w << "\n";
+                err << "rotbench: loaded " << join(ids, ", ") << " from " << terminal_line(plugin) << "\n";
+                if (const std::string w = build_warning(*plugin_of(ids.front())); !w.empty())
+                    err << "rotbench: warning: " << terminal_line(w) << "\n";
             }
             for (const auto& client : clients) {
                 const std::string id = load_client(client);
-                if (!internal) err << "rotbench: loaded client " << id << " from " << client << "\n";
+                if (!internal) err << "rotbench: loaded client " << id << " from " << terminal_line(client) << "\n";
             }
         };
         const Invocation invocation{arguments, command_line, out, err, resuming, load};
