@@ -10,6 +10,9 @@
 #include "schemes/plugin_abi.hpp"
 
 #include <catch2/catch.hpp>
+#include <sys/stat.h>
+#include <sys/resource.h>
+#include <csignal>
 #include <sstream>
 
 using namespace rotbench;
@@ -232,13 +235,37 @@ TEST_CASE("gate: a step summary that cannot take the text loses only itself") {
     const fs::path dir = fresh_dir("gate_step_full");
     fs::create_directories(dir);
     write(dir / "g.toml", "[[check]]\nscene = \"asymmetric_free\"\nschemes = [\"zvw\"]\nmax_error = 0.05\ndt = 0.05\nwhy = \"x\"\n");
-    // /dev/full opens for appending (the check before any work passes) and refuses every byte.
+    // A step summary already at the file-size limit opens for appending (the check before any work
+    // passes) and refuses every byte; the gate's own files are far below the limit.
+    const std::string step = (dir / "step.md").string();
+    write(step, std::string(1 << 20, '#'));
     const Cli r = binary({"gate", (dir / "g.toml").string(), "--out", (dir / "out").string(), "--summary", (dir / "summary.md").string()},
-                         {"GITHUB_STEP_SUMMARY=/dev/full"});
+                         {"GITHUB_STEP_SUMMARY=" + step}, [] {
+                             std::signal(SIGXFSZ, SIG_IGN);  // a write past the limit then fails with EFBIG
+                             const rlimit limit{1 << 20, 1 << 20};
+                             ::setrlimit(RLIMIT_FSIZE, &limit);
+                         });
     CHECK(r.status == 3);
-    CHECK_THAT(r.err, Catch::Contains("/dev/full"));
+    CHECK_THAT(r.err, Catch::Contains(step));
     CHECK_THAT(read(dir / "out" / "gate.csv"), Catch::Contains(",pass,"));
     CHECK_THAT(read(dir / "summary.md"), Catch::StartsWith("## rotbench gate: passed"));
+    fs::remove_all(dir);
+}
+
+TEST_CASE("gate: a step summary that is not a regular file is refused at once, before any work") {
+    const fs::path dir = fresh_dir("gate_step_fifo");
+    fs::create_directories(dir);
+    write(dir / "g.toml", "[[check]]\nscene = \"asymmetric_free\"\nschemes = [\"zvw\"]\nmax_error = 0.05\ndt = 0.05\nwhy = \"x\"\n");
+    REQUIRE(::mkfifo((dir / "fifo").c_str(), 0600) == 0);  // no reader: opening it to write would wait for one
+    for (const auto& [step, why] : std::vector<std::pair<std::string, std::string>>{
+             {(dir / "fifo").string(), "not a regular file"}, {"/dev/full", "not a regular file"}, {"/dev/stdout", "a symbolic link"}}) {
+        const Cli r = binary({"gate", (dir / "g.toml").string(), "--out", (dir / "out").string()}, {"GITHUB_STEP_SUMMARY=" + step});
+        INFO(step);
+        CHECK(r.status == 2);
+        CHECK(one_line(r.err));
+        CHECK_THAT(r.err, Catch::Contains("$GITHUB_STEP_SUMMARY: cannot write " + step + ": " + why));
+        CHECK_FALSE(fs::exists(dir / "out"));
+    }
     fs::remove_all(dir);
 }
 

@@ -131,8 +131,20 @@ void write_file_atomically(const std::filesystem::path& path, const std::string&
 }
 
 void append_to_file(const std::filesystem::path& path, const std::string& content) {
-    const int fd = ::open(path.c_str(), O_WRONLY | O_APPEND | O_CREAT | O_NOFOLLOW | O_CLOEXEC, 0644);
+    // Without blocking (a FIFO with no reader would wait for one), and only to a regular file
+    // named directly (not through a symbolic link), which is what every caller's file is.
+    const int fd = ::open(path.c_str(), O_WRONLY | O_APPEND | O_CREAT | O_NOFOLLOW | O_CLOEXEC | O_NONBLOCK, 0644);
+    if (fd < 0 && errno == ELOOP)
+        throw OutputError(fmt::format("cannot write {}: a symbolic link; rotbench appends only to a regular file named directly",
+                                      path.string()));
+    const std::string not_regular = fmt::format("cannot write {}: not a regular file (a FIFO, a device or a directory)", path.string());
+    if (fd < 0 && errno == ENXIO) throw OutputError(not_regular);  // a FIFO with no reader
     if (fd < 0) throw OutputError(fmt::format("cannot write {}: {}", path.string(), std::strerror(errno)));
+    struct stat st {};
+    if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+        ::close(fd);
+        throw OutputError(not_regular);
+    }
     int error = write_all(fd, content);
     if (::close(fd) != 0 && error == 0) error = errno;
     if (error != 0) throw OutputError(fmt::format("cannot write {}: {}", path.string(), std::strerror(error)));

@@ -39,8 +39,9 @@ void remove_temporaries_on_signal();
 void list_child_group(pid_t group);
 void release_child_group(pid_t group);
 
-// Appends `content` to the file (made if absent) in append mode: one write(2) a call, so
-// that records appended by several threads do not interleave. OutputError naming the file.
+// Appends `content` to the regular file (made if absent) in append mode: one write(2) a call,
+// so that records appended by several threads do not interleave. OutputError naming the file,
+// at once, for a symbolic link, a FIFO, a device or a directory.
 void append_to_file(const std::filesystem::path& path, const std::string& content);
 
 // The whole file as it is on disk, or nothing when it cannot be opened.
