@@ -2,8 +2,8 @@
 
 #include "harness/exec/isolation.hpp"
 #include "harness/store/output_files.hpp"
+#include "harness/store/program_path.hpp"
 
-#include <cstdlib>
 #include <fmt/format.h>
 #include <unistd.h>
 
@@ -11,22 +11,6 @@ namespace rotbench {
 namespace fs = std::filesystem;
 
 namespace {
-
-// gnuplot on the PATH, as execvp would find it.
-std::string find_gnuplot() {
-    const char* path = std::getenv("PATH");
-    std::string dirs = path ? path : "/usr/bin:/bin";
-    std::size_t start = 0;
-    while (start <= dirs.size()) {
-        const std::size_t colon = dirs.find(':', start);
-        const std::string dir = dirs.substr(start, colon == std::string::npos ? std::string::npos : colon - start);
-        const fs::path candidate = fs::path(dir.empty() ? "." : dir) / "gnuplot";
-        if (::access(candidate.c_str(), X_OK) == 0) return candidate.string();
-        if (colon == std::string::npos) break;
-        start = colon + 1;
-    }
-    return "";
-}
 
 // A plot takes gnuplot well under a second; a minute means it is stuck.
 constexpr double gnuplot_seconds = 60;
@@ -48,7 +32,7 @@ std::string gnuplot_output(const std::string& svg_name) {
 Drawn draw_with_gnuplot(const OutputDir& dir, const std::string& relative_script, const std::string& script,
                         const std::string& relative_svg) {
     dir.write(relative_script, script);
-    static const std::string gnuplot = find_gnuplot();
+    static const std::string gnuplot = find_on_path("gnuplot");
     if (gnuplot.empty()) return {false, "gnuplot is not installed"};
     const fs::path svg = dir.claim(relative_svg);
     const auto [temporary, fd] = open_temporary(svg);  // gnuplot writes into it
