@@ -184,6 +184,22 @@ TEST_CASE("clients: a bad client file is refused in one line naming the file, li
     fs::remove_all(dir);
 }
 
+TEST_CASE("clients: a program that passes the load check but cannot be executed says why, not \"status 127\"") {
+    const fs::path dir = fresh_dir("client_exec_fails");
+    fs::create_directories(dir);
+    write(dir / "bad.sh", "#!/nonexistent/interpreter\n");  // executable, but execve finds no interpreter
+    fs::permissions(dir / "bad.sh", fs::perms::owner_all);
+    write(dir / "c.toml", "id = \"c_exec\"\nprogram = [\"{dir}/bad.sh\"]\nscenes = [\"asymmetric_free\"]\nclaims = \"direct\"\n");
+    const Cli r = cli({"--client", (dir / "c.toml").string(), "run", "--scenes", "asymmetric_free", "--schemes", "c_exec", "--quick",
+                       "--out", (dir / "out").string()});
+    CHECK(r.status == 0);  // every run recorded as failed, the sweep goes on
+    const std::string runs = read(dir / "out" / "runs.csv");
+    CHECK_THAT(runs, Catch::Contains("could not start its program '" + (fs::absolute(dir) / "bad.sh").lexically_normal().string() +
+                                     "': No such file or directory"));
+    CHECK_THAT(runs, !Catch::Contains("status 127"));
+    fs::remove_all(dir);
+}
+
 TEST_CASE("clients: `run --client` sweeps a client beside the built-ins and says which scenes it skips") {
     const fs::path dir = fresh_dir("client_run");
     const fs::path file = client_file(dir, "client_no_squish", "no_squish");

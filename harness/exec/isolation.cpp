@@ -107,14 +107,22 @@ WorkerOutput run_program(std::vector<std::string> args, const std::string& direc
         const std::string found = find_on_path(args.front());
         if (found.empty()) return fail("its " + what + " '" + args.front() + "' is not found on PATH");
         args.front() = found;
+    } else {  // a relative path is the caller's, not the folder the child starts in
+        args.front() = std::filesystem::absolute(args.front()).string();
     }
     std::vector<char*> argv;
     for (auto& a : args) argv.push_back(a.data());
     argv.push_back(nullptr);
-    int out[2], err[2];
+    // started: closed by a successful exec (close-on-exec), or given the errno of the chdir or the
+    // exec that failed, so that the reason is said rather than an exit status.
+    int out[2], err[2], started[2];
     if (::pipe2(out, O_CLOEXEC) != 0) return fail("could not start its " + what + ": " + std::strerror(errno));
     if (::pipe2(err, O_CLOEXEC) != 0) {
         ::close(out[0]), ::close(out[1]);
+        return fail("could not start its " + what + ": " + std::strerror(errno));
+    }
+    if (::pipe2(started, O_CLOEXEC) != 0) {
+        ::close(out[0]), ::close(out[1]), ::close(err[0]), ::close(err[1]);
         return fail("could not start its " + what + ": " + std::strerror(errno));
     }
     const rlim_t address_space = static_cast<rlim_t>(megabytes) << 20;
@@ -143,15 +151,35 @@ WorkerOutput run_program(std::vector<std::string> args, const std::string& direc
         ::dup2(out[1], 1);
         ::dup2(err[1], 2);
         ::setpgid(0, 0);  // its own group: the terminal's Ctrl-C reaches the parent, which stops it
-        if (!directory.empty() && ::chdir(directory.c_str()) != 0) ::_exit(126);
+        const auto report = [&](int stage) {
+            const int failed[2] = {stage, errno};
+            [[maybe_unused]] const auto n = ::write(started[1], failed, sizeof failed);
+            ::_exit(127);
+        };
+        if (!directory.empty() && ::chdir(directory.c_str()) != 0) report(0);
         ::execv(argv[0], argv.data());
-        ::_exit(127);
+        report(1);
     }
     ::close(out[1]);
     ::close(err[1]);
+    ::close(started[1]);
     if (pid < 0) {
-        ::close(out[0]), ::close(err[0]);
+        ::close(out[0]), ::close(err[0]), ::close(started[0]);
         return fail("could not start its " + what + ": " + std::strerror(errno));
+    }
+    int failed[2] = {0, 0};
+    ssize_t got;
+    while ((got = ::read(started[0], failed, sizeof failed)) < 0 && errno == EINTR) {
+    }
+    ::close(started[0]);
+    if (got == static_cast<ssize_t>(sizeof failed)) {  // it never ran: reaped here, said why
+        ::kill(-pid, SIGKILL);
+        release_child_group(pid);
+        ::close(out[0]), ::close(err[0]);
+        while (::waitpid(pid, nullptr, 0) < 0 && errno == EINTR) {
+        }
+        return fail(failed[0] == 0 ? fmt::format("could not enter the folder {} for its {}: {}", directory, what, std::strerror(failed[1]))
+                                   : fmt::format("could not start its {} '{}': {}", what, args.front(), std::strerror(failed[1])));
     }
     std::string& text = result.text;
     std::string errors;
