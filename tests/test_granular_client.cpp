@@ -203,6 +203,12 @@ TEST_CASE("granular client: stones handed back at the sample times give the prob
         CHECK_THAT(bad.failure, Catch::Contains(message));
         CHECK(bad.value(metric::unstable) == 1.0);
     }
+    // A samples.csv that is a FIFO (no writer will come): refused, not waited on.
+    const fs::path fifo_file = dir / "fifo_client.toml";
+    write(fifo_file, "id = \"fifo_client\"\nprogram = [\"python3\", \"-c\", \"import os, sys; os.mkfifo(sys.argv[2])\"]\n"
+                     "scenes = [\"silo_discharge\"]\nclaims = \"richardson\"\n");
+    const RunResult fifo = made({"silo_discharge", load_client(fifo_file.string()), silo_dt, 0.0, brief_silo});
+    CHECK_THAT(fifo.failure, Catch::Contains("its samples.csv is not a regular file"));
     // The shear box's walls follow its stones: a client cannot take it.
     CHECK_THAT(made({"direct_shear", id, silo_dt, 0.0, {{"clusters", {20}}}}).failure, Catch::Contains("walls that move with the stones"));
     fs::remove_all(dir);
