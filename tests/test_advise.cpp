@@ -108,6 +108,8 @@ TEST_CASE("advise refuses a particle that is not one, in one line with exit 2, b
         {{"--tolerance", "2"}, "not below 1"},
         {{"--tolerance", "0"}, "--tolerance"},
         {{"--zeta", "-0.1"}, "--zeta"},
+        {{"--zeta", "1e300"}, "--zeta: must be at most 1000"},  // Peng's step overflowed to no step at all
+        {{"--inertia", "1,2,3e5"}, "--inertia: principal moments"},  // the scene's own check, named as the option
         {{"--omega", "-5"}, "--omega"},
         {{"--t-end", "-1"}, "--t-end"},
         {{"--t-end", "1e-9"}, "shorter than one period of the contact"},

@@ -166,7 +166,14 @@ ParamOverrides particle_params(const Particle& p) {
                              {"stiffness", {p.stiffness}},
                              {"zeta", {p.zeta}},
                              {"omega", {p.omega}}};
-    const auto scene = make_scene(scene_id, params);  // every value checked, named on error
+    std::unique_ptr<Scene> scene;
+    try {
+        scene = make_scene(scene_id, params);  // every value checked
+    } catch (const InputError& e) {  // named as the option of the same name: "particle_contact.zeta" is --zeta
+        std::string message = e.what();
+        for (std::size_t at = 0; (at = message.find(scene_id + ".", at)) != std::string::npos;) message.replace(at, scene_id.size() + 1, "--");
+        throw InputError(message);
+    }
     const auto& probe = dynamic_cast<const StabilityProbe&>(*scene);
     const double period = probe.period();
     if (p.t_end > 0 && p.t_end < period)

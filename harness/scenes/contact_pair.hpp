@@ -68,6 +68,8 @@ protected:
         a_max_ = peng::a_max(half_length, inertia.minCoeff(), mass, half_length, inertia.minCoeff(), mass);
         const double zeta = params.number("zeta");
         params.require(zeta >= 0.0, "zeta", "must not be negative");
+        // Past this, Peng's step (eq. 46, about 1/(w zeta)) is far below any step a run can take.
+        params.require(zeta <= 1e3, "zeta", "must be at most 1000 (a contact damped a thousand times past critical)");
         damping_ = zeta * peng::critical_damping(stiffness_, a_max_);
         params.positive("t_end");
     }
