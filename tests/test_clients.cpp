@@ -10,6 +10,11 @@
 #include "harness/store/client.hpp"
 
 #include <catch2/catch.hpp>
+#include <unistd.h>
+#include <chrono>
+#include <thread>
+#include <sys/wait.h>
+#include <csignal>
 #include <cmath>
 #include <cstdlib>
 #include <nlohmann/json.hpp>
@@ -88,6 +93,32 @@ TEST_CASE("clients: a program that writes garbage, a short or non-finite traject
           "a client makes runs of kind trajectory and horizon, not reversal");
     CHECK(fs::is_empty(scratch));  // every scratch directory is gone, with what the programs left there
     ::unsetenv("TMPDIR");
+    fs::remove_all(dir);
+}
+
+TEST_CASE("clients: SIGHUP stops a sweep whose client hangs, and leaves no scratch folder behind") {
+    const fs::path dir = fresh_dir("client_hangup");
+    const fs::path scratch = dir / "tmp";
+    fs::create_directories(scratch);
+    const fs::path file = client_file(dir, "client_hangup", "direct", "--hang");
+    const pid_t pid = ::fork();
+    if (pid == 0) {
+        if (!freopen("/dev/null", "w", stdout) || !freopen("/dev/null", "w", stderr)) _exit(126);
+        ::setenv("TMPDIR", scratch.c_str(), 1);
+        execl(ROTBENCH_EXE, ROTBENCH_EXE, "--client", file.c_str(), "run", "--schemes", "client_hangup", "--scenes", "asymmetric_free",
+              "--dt", "0.05", "--run-timeout", "600", "--out", (dir / "out").c_str(), nullptr);
+        _exit(127);
+    }
+    const auto started = std::chrono::steady_clock::now();
+    while (fs::is_empty(scratch) && std::chrono::steady_clock::now() - started < std::chrono::seconds(60))
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));  // the program started in it
+    ::kill(pid, SIGHUP);
+    int status = 0;
+    ::waitpid(pid, &status, 0);
+    CHECK(WIFEXITED(status));
+    CHECK(WEXITSTATUS(status) == 128 + SIGHUP);
+    CHECK(fs::is_empty(scratch));
     fs::remove_all(dir);
 }
 

@@ -126,8 +126,8 @@ TEST_CASE("isolation: a worker that leaves a process holding its output ends its
     fs::remove_all(dir);
 }
 
-TEST_CASE("isolation: SIGINT or SIGTERM stops a sweep whose plug-in hangs, and kills its worker") {
-    for (const int signal : {SIGINT, SIGTERM}) {
+TEST_CASE("isolation: SIGINT, SIGTERM or SIGHUP stops a sweep whose plug-in hangs, and kills its worker") {
+    for (const int signal : {SIGINT, SIGTERM, SIGHUP}) {
         const fs::path dir = fresh_dir("isolation_signal");
         const pid_t pid = ::fork();
         if (pid == 0) {

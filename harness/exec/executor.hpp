@@ -36,7 +36,7 @@ public:
     Executor(std::ostream& out, std::ostream& err, ExecOptions options, std::optional<Journal> journal = std::nullopt);
 
     // The tasks' results in their order; a task given twice is made once. A failing run is
-    // recorded and the others go on; once SIGINT or SIGTERM is caught no task starts, those in
+    // recorded and the others go on; once SIGINT, SIGTERM or SIGHUP is caught no task starts, those in
     // flight stop, and their results are marked interrupted. Progress goes to err, a line per
     // failed run to out. A journal that cannot be written (a full disk) stops the tasks: the
     // ones in flight finish, and an OutputError says what is kept and how to resume.

@@ -9,7 +9,7 @@ namespace {
 std::atomic<int> caught{0};  // lock-free on every target we build for: safe in a handler
 static_assert(std::atomic<int>::is_always_lock_free);
 
-struct sigaction previous_int, previous_term;
+struct sigaction previous_int, previous_term, previous_hup;
 
 extern "C" void raise_flag(int signal) { caught.store(signal, std::memory_order_relaxed); }
 
@@ -22,12 +22,14 @@ InterruptGuard::InterruptGuard() {
     sigemptyset(&action.sa_mask);
     sigaction(SIGINT, &action, &previous_int);
     sigaction(SIGTERM, &action, &previous_term);
+    sigaction(SIGHUP, &action, &previous_hup);  // the terminal closed, or a batch system's notice
 }
 
 InterruptGuard::~InterruptGuard() {
     caught.store(0);  // a later sweep in this process is not interrupted
     sigaction(SIGINT, &previous_int, nullptr);
     sigaction(SIGTERM, &previous_term, nullptr);
+    sigaction(SIGHUP, &previous_hup, nullptr);
 }
 
 int interrupt_signal() { return caught.load(std::memory_order_relaxed); }

@@ -16,7 +16,7 @@ public:
     InterruptGuard& operator=(const InterruptGuard&) = delete;
 };
 
-// The signal that was caught (SIGINT or SIGTERM), -1 when the sweep was asked to stop for
+// The signal that was caught (SIGINT, SIGTERM or SIGHUP), -1 when the sweep was asked to stop for
 // another reason (request_stop), or 0. Cheap: checked at every step.
 int interrupt_signal();
 // Stops the sweep as a signal would (a file it must write cannot be written).

@@ -134,6 +134,7 @@ WorkerOutput run_program(std::vector<std::string> args, const std::string& direc
     sigemptyset(&ending);
     sigaddset(&ending, SIGINT);
     sigaddset(&ending, SIGTERM);
+    sigaddset(&ending, SIGHUP);
     ::pthread_sigmask(SIG_BLOCK, &ending, &before);
     const pid_t parent = ::getpid();
     const pid_t pid = ::fork();

@@ -95,6 +95,7 @@ void remove_temporaries_on_signal() {
     sigemptyset(&action.sa_mask);
     sigaction(SIGINT, &action, nullptr);
     sigaction(SIGTERM, &action, nullptr);
+    sigaction(SIGHUP, &action, nullptr);
 }
 
 std::pair<std::filesystem::path, int> open_temporary(const std::filesystem::path& path) {

@@ -31,7 +31,7 @@ void write_file_atomically(const std::filesystem::path& path, const std::string&
 std::pair<std::filesystem::path, int> open_temporary(const std::filesystem::path& path);
 void release_temporary(const std::filesystem::path& temporary);
 
-// From now on SIGINT or SIGTERM, where nothing else handles them (an executor stops its runs
+// From now on SIGINT, SIGTERM or SIGHUP, where nothing else handles them (an executor stops its runs
 // itself), first kills the programs in flight and removes the temporaries in flight, then ends
 // the process by that signal.
 void remove_temporaries_on_signal();
