@@ -4,8 +4,10 @@
 // paths. Each is refused with exit 2 and one line, before anything is written, or (the paths)
 // simply works, with no shell ever started.
 #include "tests/cli_helpers.hpp"
+#include "harness/store/results_csv.hpp"
 
 #include <catch2/catch.hpp>
+#include <functional>
 #include <sys/stat.h>
 #include <tuple>
 
@@ -127,6 +129,21 @@ TEST_CASE("hostile inputs: a forged shard.csv is refused before anything is size
         CHECK(r.status == 2);
         CHECK(one_line(r.err));
         CHECK_THAT(r.err, Catch::Contains(message));
+        CHECK_FALSE(fs::exists(dir / "out"));
+    }
+    // A run store edited to hold another duration, step or parameters than the run its row names:
+    // the merged folder would differ from the unsharded run's, so it is refused.
+    for (const auto& edit : std::vector<std::function<void(rotbench::RunSpec&)>>{
+             [](rotbench::RunSpec& s) { s.t_end = 2.0 * s.t_end; }, [](rotbench::RunSpec& s) { s.dt = s.dt / 2; },
+             [](rotbench::RunSpec& s) { s.params = {{"field", {0.0, 0.0, 2.0}}}; }}) {
+        fs::remove_all(dir / "forged");
+        fs::copy(dir / "1", dir / "forged", fs::copy_options::recursive);
+        std::vector<rotbench::RunResult> runs = rotbench::read_results(dir / "forged");
+        edit(runs.front().spec);
+        write(dir / "forged" / "runs.jsonl", rotbench::run_store(runs));
+        const Cli r = cli({"merge", (dir / "forged").string(), (dir / "2").string(), "--out", (dir / "out").string()});
+        CHECK(r.status == 2);
+        CHECK_THAT(r.err, Catch::Contains("does not match runs.jsonl"));
         CHECK_FALSE(fs::exists(dir / "out"));
     }
     fs::remove_all(dir);

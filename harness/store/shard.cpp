@@ -35,6 +35,8 @@ std::vector<std::size_t> shard_indices(std::size_t plan_size, const Shard& shard
     return out;
 }
 
+std::string run_id(const RunSpec& spec) { return plan_id({spec}); }
+
 std::string plan_id(const std::vector<RunSpec>& plan) {
     Fnv1a h;
     for (const auto& r : plan) {
@@ -51,10 +53,10 @@ std::string plan_id(const std::vector<RunSpec>& plan) {
 
 std::string shard_csv(const std::string& plan_id, int shard, int shards, const std::vector<RunResult>& results,
                       const std::vector<std::size_t>& plan_indices, std::size_t plan_size) {
-    std::string csv = "plan_id,shard,shards,plan_size,plan_index,scene,scheme,dt\n";
+    std::string csv = std::string(shard_header) + "\n";
     for (std::size_t i = 0; i < results.size(); ++i)
-        csv += fmt::format("{},{},{},{},{},{},{},{}\n", plan_id, shard, shards, plan_size, plan_indices[i], results[i].spec.scene,
-                           results[i].spec.scheme, format_number(results[i].spec.dt));
+        csv += fmt::format("{},{},{},{},{},{},{},{},{}\n", plan_id, shard, shards, plan_size, plan_indices[i], results[i].spec.scene,
+                           results[i].spec.scheme, format_number(results[i].spec.dt), run_id(results[i].spec));
     return csv;
 }
 
@@ -69,7 +71,7 @@ std::vector<RunResult> merge_shards(const std::vector<std::filesystem::path>& di
         if (!std::filesystem::exists(std::filesystem::symlink_status(dir / "shard.csv")))
             throw InputError(dir.string() + " is a whole run, not a slice of `rotbench run --shard K/N`: merge joins either the "
                              "slices of one sharded command or whole runs, not both");
-        const auto rows = read_csv(dir / "shard.csv", "plan_id,shard,shards,plan_size,plan_index,scene,scheme,dt");
+        const auto rows = read_csv(dir / "shard.csv", shard_header);
         const auto results = read_results(dir);
         if (rows.size() != results.size())
             throw InputError(name + ": lists " + std::to_string(rows.size()) + " runs, runs.jsonl " +
@@ -105,8 +107,8 @@ std::vector<RunResult> merge_shards(const std::vector<std::filesystem::path>& di
                 seen.push_back(static_cast<int>(k));
             }
             const RunResult& r = results[i];
-            if (index >= plan_size || merged.count(index) || r.spec.scene != f[5] || r.spec.scheme != f[6])
-                throw InputError(name + ": row " + std::to_string(i + 2) + " does not match runs.jsonl");
+            if (index >= plan_size || merged.count(index) || r.spec.scene != f[5] || r.spec.scheme != f[6] || run_id(r.spec) != f[8])
+                throw InputError(name + ": row " + std::to_string(i + 2) + " does not match runs.jsonl (its run, step, duration or parameters)");
             merged[index] = r;
         }
     }

@@ -28,9 +28,13 @@ std::vector<std::size_t> shard_indices(std::size_t plan_size, const Shard& shard
 // merge refuses slices of different sweeps.
 std::string plan_id(const std::vector<RunSpec>& plan);
 
-// shard.csv, written by `rotbench run --shard K/N` beside its results.csv and runs.csv:
-// header plan_id,shard,shards,plan_size,plan_index,scene,scheme,dt, a row per run of the
-// slice, in the order of runs.csv.
+// One run's fingerprint: plan_id of it alone, as made (its step, duration and parameters).
+std::string run_id(const RunSpec& spec);
+
+// shard.csv, written by `rotbench run --shard K/N` beside its results.csv and runs.csv: a row per
+// run of the slice, in the order of runs.csv, with the run's id, which merge checks against the run
+// store (a store edited to hold another step, duration or parameters is refused).
+inline constexpr const char* shard_header = "plan_id,shard,shards,plan_size,plan_index,scene,scheme,dt,run";
 std::string shard_csv(const std::string& plan_id, int shard, int shards, const std::vector<RunResult>& results,
                       const std::vector<std::size_t>& plan_indices, std::size_t plan_size);
 
