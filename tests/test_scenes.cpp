@@ -251,6 +251,24 @@ TEST_CASE("reference trajectories are cached on disk, keyed by their inputs and 
     std::filesystem::remove_all(dir);
 }
 
+TEST_CASE("a reference cache another user owns or others may write is neither read nor written") {
+    const auto dir = std::filesystem::temp_directory_path() / ("rotbench_shared_cache_" + std::to_string(::getpid()));
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    ::setenv("ROTBENCH_CACHE", dir.c_str(), 1);
+    std::filesystem::permissions(dir, std::filesystem::perms::all);  // 0777: anyone could edit a file and its checksum
+    CHECK_THAT(untrusted_cache_reason(), Catch::Contains("is not used: it is writable by others"));
+    Trajectory t;
+    t.bodies = 1;
+    t.values.assign(2 * Trajectory::width, 0.5);
+    store_cached("dipole_top", "key-shared", t);
+    CHECK(std::filesystem::is_empty(dir));
+    std::filesystem::permissions(dir, std::filesystem::perms::owner_all);  // 0700: the user's own
+    CHECK(untrusted_cache_reason().empty());
+    ::unsetenv("ROTBENCH_CACHE");
+    std::filesystem::remove_all(dir);
+}
+
 TEST_CASE("every scene's registry entry states its traits, the same as the scene built from it") {
     for (const auto& id : SceneRegistry::instance().ids()) {
         INFO(id);

@@ -7,6 +7,7 @@
 #include "harness/store/output_files.hpp"
 #include "harness/store/client.hpp"
 #include "harness/store/plugin.hpp"
+#include "harness/store/reference_cache.hpp"
 
 #include "build_info.hpp"
 
@@ -131,6 +132,7 @@ int run_cli_arguments(const std::vector<std::string>& arguments, std::ostream& o
                 if (!internal) err << "rotbench: loaded client " << id << " from " << terminal_line(client) << "\n";
             }
         };
+        if (const std::string why = untrusted_cache_reason(); !why.empty() && !internal) err << "rotbench: warning: " << terminal_line(why) << "\n";
         const Invocation invocation{arguments, command_line, out, err, resuming, load};
         if (!verb.defers_plugins()) load();
         return verb.run(invocation);

@@ -13,6 +13,8 @@
 #include <fmt/format.h>
 #include <fstream>
 #include <string_view>
+#include <sys/stat.h>
+#include <unistd.h>
 #include <vector>
 
 namespace rotbench {
@@ -27,13 +29,14 @@ constexpr char magic[8] = {'R', 'B', 'T', 'R', 'J', '0', '0', '2'};  // 002: wit
 // differed from a fresh run in the 14th digit.)
 std::string stored_key(const std::string& run_key) { return run_key + "|build=" + cache_build_key(); }
 
-std::filesystem::path directory() {
-    if (!build_is_pinned()) return "";
+std::filesystem::path configured_directory() {
     if (const char* dir = std::getenv("ROTBENCH_CACHE")) return std::string(dir) == "off" ? "" : dir;
     if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg) return std::filesystem::path(xdg) / "rotbench";
     if (const char* home = std::getenv("HOME"); home && *home) return std::filesystem::path(home) / ".cache" / "rotbench";
     return "";
 }
+
+std::filesystem::path directory() { return build_is_pinned() && untrusted_cache_reason().empty() ? configured_directory() : ""; }
 
 std::filesystem::path file_for(const std::string& scene_id, const std::string& key) {
     const auto dir = directory();
@@ -54,6 +57,18 @@ bool cache_file(const std::filesystem::path& path) {
 }
 
 }  // namespace
+
+std::string untrusted_cache_reason() {
+    const auto dir = configured_directory();
+    struct stat st {};
+    if (dir.empty() || ::stat(dir.c_str(), &st) != 0) return "";  // none, or made by this user when first stored
+    if (!S_ISDIR(st.st_mode)) return fmt::format("the reference cache {} is not a directory", dir.string());
+    if (st.st_uid != ::geteuid() || (st.st_mode & (S_IWGRP | S_IWOTH)) != 0)
+        return fmt::format("the reference cache {} is not used: it is {}, and whoever can write it could change every later "
+                           "result (its checksums find damage, not edits); give each user a cache of their own (ROTBENCH_CACHE)",
+                           dir.string(), st.st_uid != ::geteuid() ? "another user's" : "writable by others");
+    return "";
+}
 
 // Another process may remove the same files at once: errors are ignored.
 void trim_cache(const std::filesystem::path& dir, std::uintmax_t limit, const std::filesystem::path& keep) {

@@ -21,6 +21,11 @@ namespace rotbench {
 std::string cache_build_key();
 bool build_is_pinned();
 
+// Why the configured cache folder is not used, or "" when it is: a folder another user owns, or
+// one that others may write, could be edited to change every later result (the checksums find
+// damage, not edits), so it is neither read nor written.
+std::string untrusted_cache_reason();
+
 // Larger trajectories are not kept: 512 MiB, 9.6 million body-steps of 56 bytes.
 inline constexpr std::size_t max_cached_bytes = std::size_t(1) << 29;
 // The whole cache is kept below this: past it, storing a trajectory removes the cache's files
