@@ -3,9 +3,14 @@
 // throws or returns NaN is a failed run, never a crash.
 #include "tests/cli_helpers.hpp"
 
+#include "harness/exec/isolation.hpp"
 #include "schemes/plugin_abi.hpp"
+#include "tests/skip.hpp"
 
 #include <catch2/catch.hpp>
+#include <cstdint>
+#include <fstream>
+#include <sys/resource.h>
 
 using namespace rotbench;
 using namespace rotbench::test;
@@ -42,6 +47,26 @@ TEST_CASE("plug-in: bad plug-ins give one line on stderr and exit status 2") {
         CHECK(one_line(r.err));
         CHECK_THAT(r.err, Catch::Contains(c.message));
     }
+}
+
+TEST_CASE("plug-in: a file of gigabytes is hashed a block at a time, not read whole before dlopen") {
+    if (!memory_limit_enforced()) ROTBENCH_SKIP("no memory limit holds here (AddressSanitizer's shadow memory takes it all)");
+    const fs::path dir = fresh_dir("plugin_huge");
+    fs::create_directories(dir);
+    {
+        std::ofstream huge(dir / "huge.so", std::ios::binary);
+        huge.seekp((std::streamoff(3) << 29) - 1);  // 1.5 GiB, sparse: no disk taken
+        huge.put('\0');
+    }
+    // In 1 GiB of address space: reading it whole ran out of memory (exit 3); hashed in blocks, dlopen refuses it.
+    const Cli r = binary({"--plugin", (dir / "huge.so").string(), "list"}, {}, [] {
+        const rlimit limit{std::uint64_t(1) << 30, std::uint64_t(1) << 30};
+        ::setrlimit(RLIMIT_AS, &limit);
+    });
+    CHECK(r.status == 2);
+    CHECK(one_line(r.err));
+    CHECK_THAT(r.err, Catch::Contains("cannot load"));
+    fs::remove_all(dir);
 }
 
 TEST_CASE("plug-in: a scheme id another file registered is refused, and the same file twice is loaded once") {

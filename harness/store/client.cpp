@@ -144,7 +144,7 @@ std::string load_client(const std::string& path) {
     // names a regular file (an interpreter, an adapter script), its bytes in turn.
     Fnv1a program_hash;
     for (const auto& argument : client.program)
-        if (const auto bytes = read_file(argument)) program_hash.feed(*bytes);  // regular files only
+        feed_file(argument, program_hash);  // regular files only
     client.program_hash = program_hash.hex();
     client.scenes = ids(path, "scenes", *scenes_node, SceneRegistry::instance(), "scene");
     SchemeClaims claims = claims_of(path, *claims_node);

@@ -151,6 +151,25 @@ void append_to_file(const std::filesystem::path& path, const std::string& conten
     if (error != 0) throw OutputError(fmt::format("cannot write {}: {}", path.string(), std::strerror(error)));
 }
 
+bool feed_file(const std::filesystem::path& path, Fnv1a& hash) {
+    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
+    if (fd < 0) return false;
+    struct stat st {};
+    bool ok = ::fstat(fd, &st) == 0 && S_ISREG(st.st_mode);
+    char buffer[1 << 16];
+    while (ok) {
+        const ssize_t n = ::read(fd, buffer, sizeof buffer);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) {
+            ok = n == 0;
+            break;
+        }
+        hash.feed(std::string_view(buffer, static_cast<std::size_t>(n)));
+    }
+    ::close(fd);
+    return ok;
+}
+
 std::optional<std::string> read_file(const std::filesystem::path& path) {
     const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
     if (fd < 0) return std::nullopt;

@@ -4,6 +4,8 @@
 // read forever.
 #pragma once
 
+#include "harness/core/fnv1a.hpp"
+
 #include <cstddef>
 #include <filesystem>
 #include <fstream>
@@ -43,6 +45,11 @@ void release_child_group(pid_t group);
 // so that records appended by several threads do not interleave. OutputError naming the file,
 // at once, for a symbolic link, a FIFO, a device or a directory.
 void append_to_file(const std::filesystem::path& path, const std::string& content);
+
+// Feeds a regular file's bytes to `hash` a block at a time, so that a file of gigabytes (a
+// plug-in, a client's interpreter) is never held whole; false when it is not a regular file
+// that can be read.
+bool feed_file(const std::filesystem::path& path, Fnv1a& hash);
 
 // The whole file as it is on disk, or nothing when it cannot be opened.
 std::optional<std::string> read_file(const std::filesystem::path& path);

@@ -48,11 +48,11 @@ std::vector<std::string> load_plugin(const std::string& path) {
     const std::string where = "--plugin " + path;
     if (!std::filesystem::exists(path)) throw InputError(where + ": no such file");
     if (!std::filesystem::is_regular_file(path)) throw InputError(where + ": not a regular file");
-    const auto bytes = read_file(path);
-    if (!bytes) throw InputError(where + ": cannot read the file");
+    Fnv1a bytes;
+    if (!feed_file(path, bytes)) throw InputError(where + ": cannot read the file");
     // The same file again (a long-lived process, or the option given twice): already loaded.
     // Symlinks resolved: the same library reached another way is loaded once.
-    const std::string absolute = std::filesystem::weakly_canonical(std::filesystem::absolute(path)).string(), hash = Fnv1a().feed(*bytes).hex();
+    const std::string absolute = std::filesystem::weakly_canonical(std::filesystem::absolute(path)).string(), hash = bytes.hex();
     for (const auto& p : plugins())
         if (p.path == absolute && p.hash == hash) return p.schemes;
     // A path without '/' would make dlopen search the library path instead of this file.
