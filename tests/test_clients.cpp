@@ -71,6 +71,7 @@ TEST_CASE("clients: a program that writes garbage, a short or non-finite traject
     const std::vector<std::pair<std::string, std::string>> faults = {
         {"--garbage", "its trajectory is malformed: its trajectory.csv:1: expected the header 't,qw,qx,qy,qz,wx,wy,wz'"},
         {"--short", "its trajectory has 200 rows; 201 are due, one at every step t = k dt, k = 0 ... 200"},
+        {"--huge", "its trajectory.csv is larger than 201 rows of 8 numbers can make it (107008 bytes)"},  // 4096 + 64 x 8 x 201: not read
         {"--nan", "its trajectory.csv:102:6 (wx): a value that is not finite (nan)"},  // line and column
         {"--crash", "crashed: signal 11 (Segmentation fault) in its program process"},
     };

@@ -5,7 +5,7 @@ client's columns, so that its runs must equal the built-in's bit for bit. With a
 misbehaves as a broken code would, for the tests of failed client runs.
 
 usage: rotbench_client.py ROTBENCH SCHEME [FAULT] scene.json trajectory.csv
-FAULT: --garbage, --short, --nan, --hang, --crash, --litter (writes outside its directory's files),
+FAULT: --garbage, --huge (a trajectory.csv of 4 MB), --short, --nan, --hang, --crash, --litter (writes outside its directory's files),
        --decline-torque (declines every scene with a torque: exit 3, docs/clients.md)
 """
 import json
@@ -29,6 +29,10 @@ if fault == "--hang":
     time.sleep(3600)
 if fault == "--crash":
     os.kill(os.getpid(), signal.SIGSEGV)
+if fault == "--huge":
+    with open(out_path, "w") as f:
+        f.write(spec["columns"] + "\n" + "1" * (4 << 20) + "\n")
+    sys.exit(0)
 if fault == "--garbage":
     with open(out_path, "w") as f:
         f.write("this is not a trajectory\n")
