@@ -43,6 +43,13 @@ struct RunSpec {
     friend auto operator<=>(const RunSpec&, const RunSpec&) = default;
 };
 
+// What a run computes, its identity without `timed`: a timed and an untimed run give the same
+// results (compare and merge match runs by it).
+inline RunSpec computed_key(RunSpec spec) {
+    spec.timed = true;
+    return spec;
+}
+
 struct RunResult {
     RunSpec spec;
     std::vector<std::pair<std::string, double>> metrics;  // names are the CSV contract

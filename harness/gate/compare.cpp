@@ -11,12 +11,6 @@
 namespace rotbench {
 namespace {
 
-// Whether a run was timed does not change what it computes: a timed and an untimed run match.
-RunSpec key_of(RunSpec s) {
-    s.timed = true;
-    return s;
-}
-
 std::string run_name(const RunSpec& s) { return fmt::format("{} {} {} dt={}", s.scene, s.scheme, kind_name(s.kind), figure(s.dt)); }
 
 Verdict verdict(const std::string& id, const std::string& scene, const std::string& scheme, const std::string& where,
@@ -45,14 +39,14 @@ Comparison compare_runs(const std::vector<RunResult>& base, const std::vector<Ru
     std::map<RunSpec, const RunResult*> by_key;
     std::map<Pair, RunRefs> base_ladders, new_ladders;  // trajectory runs: all of BASE's, NEW's matched ones
     for (const auto& r : base) {
-        by_key[key_of(r.spec)] = &r;
+        by_key[computed_key(r.spec)] = &r;
         if (r.spec.kind == RunKind::trajectory) base_ladders[{r.spec.scene, r.spec.scheme}].push_back(&r);
     }
     std::vector<Pair> pairs;  // in the order of the new runs
     std::map<Pair, RunPairs> matched;
     std::map<RunSpec, bool> seen;
     for (const auto& r : now) {
-        const auto it = by_key.find(key_of(r.spec));
+        const auto it = by_key.find(computed_key(r.spec));
         if (it == by_key.end()) {
             c.notes.push_back(run_name(r.spec) + ": not in the baseline");
             continue;
@@ -74,7 +68,7 @@ Comparison compare_runs(const std::vector<RunResult>& base, const std::vector<Ru
     // A run of BASE that NEW lacks is a regression: what it showed is no longer shown.
     std::map<Pair, std::vector<std::string>> missing;
     for (const auto& r : base)
-        if (!seen.count(key_of(r.spec))) missing[{r.spec.scene, r.spec.scheme}].push_back(fmt::format("{} dt={}", kind_name(r.spec.kind), figure(r.spec.dt)));
+        if (!seen.count(computed_key(r.spec))) missing[{r.spec.scene, r.spec.scheme}].push_back(fmt::format("{} dt={}", kind_name(r.spec.kind), figure(r.spec.dt)));
     for (const auto& [pair, runs] : missing) {
         Judgement j;
         j.measured = static_cast<double>(runs.size());

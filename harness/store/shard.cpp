@@ -134,9 +134,7 @@ std::vector<RunResult> join_runs(const std::vector<std::filesystem::path>& dirs)
             throw InputError(dir.string() + " is a slice of `rotbench run --shard K/N`: merge joins either the slices of one "
                              "sharded command or whole runs, not both");
         for (auto& r : read_results(dir)) {
-            RunSpec key = r.spec;
-            key.timed = true;  // a timed and an untimed run compute the same
-            if (const auto [it, fresh] = from.try_emplace(key, dir); !fresh)
+            if (const auto [it, fresh] = from.try_emplace(computed_key(r.spec), dir); !fresh)
                 throw InputError(fmt::format("merge: the {} run of {} on {} at dt = {}, with the same parameters, is in both {} and "
                                              "{}: a run is joined once (an ensemble grown in parts takes other seeds: --set SCENE.seed=N)",
                                              kind_name(r.spec.kind), r.spec.scheme, r.spec.scene, format_number(r.spec.dt),
