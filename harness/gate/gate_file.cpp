@@ -76,6 +76,41 @@ struct Selection {
     }
 };
 
+// A check's schemes: the list, or every sound scheme ("*") less 'except'; for same_map_as, each a
+// client measured against that counterpart.
+std::vector<std::string> check_schemes(const std::string& path, const toml::table& t, const GateCheck& c, const toml::node& schemes_node,
+                                       const toml::node* except_node, const Selection& selection) {
+    const auto names = strings(path, "schemes", schemes_node);
+    std::vector<std::string> schemes = names.size() == 1 && names[0] == "*" ? sound_schemes() : selection.schemes(path, "schemes", schemes_node);
+    if (except_node) {  // "*" but these: a check that covers plug-ins yet leaves out a scheme held to another bound
+        if (!(names.size() == 1 && names[0] == "*")) toml_error(path, *except_node, "'except' applies to schemes = [\"*\"] only");
+        for (const auto& id : ids(path, "except", *except_node, SchemeRegistry::instance(), "scheme")) std::erase(schemes, id);
+    }
+    if (c.criterion == "same_map_as")
+        for (const auto& id : schemes) {
+            const LoadedClient* client = client_of(id);
+            if (!client || client->counterpart != c.same_map_as)
+                toml_error(path, t, "same_map_as = '" + c.same_map_as + "' judges clients whose counterpart it is; '" + id + "' is " +
+                                        (client ? "a client with counterpart '" + client->counterpart + "'" : "not a client"));
+        }
+    return schemes;
+}
+
+// The steps a criterion needs: a ladder of at least 3 for min_order, none for min_stability (on a
+// stability scene), exactly one for the others.
+void check_steps(const std::string& path, const toml::table& t, const GateCheck& c) {
+    const bool ladder = c.criterion == "min_order" || c.criterion == "same_map_as";
+    if (c.criterion == "min_stability") {
+        if (!c.dts.empty()) toml_error(path, t, "min_stability searches for the limit itself: remove 'dt'");
+        const std::vector<std::string> valid = stability_scene_ids();
+        if (std::find(valid.begin(), valid.end(), c.scene) == valid.end())
+            toml_error(path, t, "min_stability needs a stability scene (" + join(valid, ", ") + "), not '" + c.scene + "'");
+    } else if (!ladder && c.dts.size() != 1) {
+        toml_error(path, t, "'" + c.criterion + "' needs exactly one 'dt'");
+    }
+    if (c.criterion == "min_order" && !c.dts.empty() && c.dts.size() < 3) toml_error(path, t, "min_order needs at least 3 time steps in 'dt'");
+}
+
 GateCheck read_check(const std::string& path, const toml::table& t, std::size_t index, const Selection& selection) {
     GateCheck c;
     c.location = fmt::format("{}:{}", path, t.source().begin.line);
@@ -140,31 +175,8 @@ GateCheck read_check(const std::string& path, const toml::table& t, std::size_t 
     if (!metric.empty() && c.criterion != "min_order" && c.criterion != "max_error")
         toml_error(path, t, "'metric' applies to min_order and max_error only");
     c.metric = metric_of(c.criterion, metric);
-    const auto names = strings(path, "schemes", *schemes_node);
-    if (names.size() == 1 && names[0] == "*") c.schemes = sound_schemes();
-    else c.schemes = selection.schemes(path, "schemes", *schemes_node);
-    if (except_node) {  // "*" but these: a check that covers plug-ins yet leaves out a scheme held to another bound
-        if (!(names.size() == 1 && names[0] == "*")) toml_error(path, *except_node, "'except' applies to schemes = [\"*\"] only");
-        for (const auto& id : ids(path, "except", *except_node, SchemeRegistry::instance(), "scheme"))
-            std::erase(c.schemes, id);
-    }
-    if (c.criterion == "same_map_as")  // each scheme a client measured against that counterpart
-        for (const auto& id : c.schemes) {
-            const LoadedClient* client = client_of(id);
-            if (!client || client->counterpart != c.same_map_as)
-                toml_error(path, t, "same_map_as = '" + c.same_map_as + "' judges clients whose counterpart it is; '" + id + "' is " +
-                                        (client ? "a client with counterpart '" + client->counterpart + "'" : "not a client"));
-        }
-    const bool ladder = c.criterion == "min_order" || c.criterion == "same_map_as";
-    if (c.criterion == "min_stability") {
-        if (!c.dts.empty()) toml_error(path, t, "min_stability searches for the limit itself: remove 'dt'");
-        const std::vector<std::string> valid = stability_scene_ids();
-        if (std::find(valid.begin(), valid.end(), c.scene) == valid.end())
-            toml_error(path, t, "min_stability needs a stability scene (" + join(valid, ", ") + "), not '" + c.scene + "'");
-    } else if (!ladder && c.dts.size() != 1) {
-        toml_error(path, t, "'" + c.criterion + "' needs exactly one 'dt'");
-    }
-    if (c.criterion == "min_order" && !c.dts.empty() && c.dts.size() < 3) toml_error(path, t, "min_order needs at least 3 time steps in 'dt'");
+    c.schemes = check_schemes(path, t, c, *schemes_node, except_node, selection);
+    check_steps(path, t, c);
     if (c.name.empty()) c.name = c.criterion;
     make_scene(c.scene, c.params);  // parameters valid together (e.g. moments), named on error
     return c;
