@@ -97,28 +97,40 @@ TEST_CASE("clients: a program that writes garbage, a short or non-finite traject
     fs::remove_all(dir);
 }
 
-TEST_CASE("clients: SIGHUP stops a sweep whose client hangs, and leaves no scratch folder behind") {
+TEST_CASE("clients: SIGHUP stops a sweep whose client hangs, and leaves no scratch folder behind, and nohup keeps it ignored") {
     const fs::path dir = fresh_dir("client_hangup");
     const fs::path scratch = dir / "tmp";
     fs::create_directories(scratch);
     const fs::path file = client_file(dir, "client_hangup", "direct", "--hang");
-    const pid_t pid = ::fork();
-    if (pid == 0) {
-        if (!freopen("/dev/null", "w", stdout) || !freopen("/dev/null", "w", stderr)) _exit(126);
-        ::setenv("TMPDIR", scratch.c_str(), 1);
-        execl(ROTBENCH_EXE, ROTBENCH_EXE, "--client", file.c_str(), "run", "--schemes", "client_hangup", "--scenes", "asymmetric_free",
-              "--dt", "0.05", "--run-timeout", "600", "--out", (dir / "out").c_str(), nullptr);
-        _exit(127);
-    }
-    const auto started = std::chrono::steady_clock::now();
-    while (fs::is_empty(scratch) && std::chrono::steady_clock::now() - started < std::chrono::seconds(60))
-        std::this_thread::sleep_for(std::chrono::milliseconds(5));
-    std::this_thread::sleep_for(std::chrono::milliseconds(200));  // the program started in it
-    ::kill(pid, SIGHUP);
-    int status = 0;
-    ::waitpid(pid, &status, 0);
-    CHECK(WIFEXITED(status));
-    CHECK(WEXITSTATUS(status) == 128 + SIGHUP);
+    const auto start = [&](bool nohup) {
+        const pid_t pid = ::fork();
+        if (pid == 0) {
+            if (!freopen("/dev/null", "w", stdout) || !freopen("/dev/null", "w", stderr)) _exit(126);
+            if (nohup) ::signal(SIGHUP, SIG_IGN);  // as nohup(1) starts a program
+            ::setenv("TMPDIR", scratch.c_str(), 1);
+            execl(ROTBENCH_EXE, ROTBENCH_EXE, "--client", file.c_str(), "run", "--schemes", "client_hangup", "--scenes", "asymmetric_free",
+                  "--dt", "0.05", "--run-timeout", "600", "--out", (dir / "out").c_str(), "--overwrite", nullptr);
+            _exit(127);
+        }
+        const auto started = std::chrono::steady_clock::now();
+        while (fs::is_empty(scratch) && std::chrono::steady_clock::now() - started < std::chrono::seconds(60))
+            std::this_thread::sleep_for(std::chrono::milliseconds(5));
+        std::this_thread::sleep_for(std::chrono::milliseconds(200));  // the program started in it
+        return pid;
+    };
+    const auto ended_by = [](pid_t pid, int signal) {
+        ::kill(pid, signal);
+        int status = 0;
+        ::waitpid(pid, &status, 0);
+        return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    };
+    CHECK(ended_by(start(false), SIGHUP) == 128 + SIGHUP);
+    CHECK(fs::is_empty(scratch));
+    const pid_t ignoring = start(true);
+    ::kill(ignoring, SIGHUP);
+    std::this_thread::sleep_for(std::chrono::milliseconds(500));  // it looks at signals every 0.1 s
+    CHECK(::waitpid(ignoring, nullptr, WNOHANG) == 0);            // still running
+    CHECK(ended_by(ignoring, SIGTERM) == 128 + SIGTERM);
     CHECK(fs::is_empty(scratch));
     fs::remove_all(dir);
 }

@@ -22,7 +22,9 @@ InterruptGuard::InterruptGuard() {
     sigemptyset(&action.sa_mask);
     sigaction(SIGINT, &action, &previous_int);
     sigaction(SIGTERM, &action, &previous_term);
-    sigaction(SIGHUP, &action, &previous_hup);  // the terminal closed, or a batch system's notice
+    // The terminal closed, or a batch system's notice; unless ignored on purpose (nohup).
+    sigaction(SIGHUP, nullptr, &previous_hup);
+    if (previous_hup.sa_handler != SIG_IGN) sigaction(SIGHUP, &action, nullptr);
 }
 
 InterruptGuard::~InterruptGuard() {

@@ -95,7 +95,9 @@ void remove_temporaries_on_signal() {
     sigemptyset(&action.sa_mask);
     sigaction(SIGINT, &action, nullptr);
     sigaction(SIGTERM, &action, nullptr);
-    sigaction(SIGHUP, &action, nullptr);
+    struct sigaction hangup {};
+    sigaction(SIGHUP, nullptr, &hangup);
+    if (hangup.sa_handler != SIG_IGN) sigaction(SIGHUP, &action, nullptr);  // ignored on purpose under nohup
 }
 
 std::pair<std::filesystem::path, int> open_temporary(const std::filesystem::path& path) {
