@@ -1,5 +1,7 @@
 #include "harness/analysis/advice.hpp"
 
+#include "harness/analysis/answer.hpp"
+
 #include "harness/analysis/median.hpp"
 #include "harness/analysis/order_fit.hpp"
 #include "harness/scenes/stability_probe.hpp"
@@ -25,6 +27,28 @@ struct Outcome {
 
 // Each of the scheme's runs is a task of the executor: a plug-in's in its worker, so that one that
 // crashes or hangs is not recommended, with the reason, and the other schemes are still advised.
+// The dt the ladder gives for the tolerance, with how and the error it predicts: dt0 when the first
+// rung meets it, a measured rung after an unstable one, else interpolated between the first rung
+// that meets it and the one before; NaN when none does.
+double chosen_dt(const std::vector<RunResult>& ladder, double dt0, double tolerance, const std::string& extrapolated, Recommendation& r) {
+    for (std::size_t k = 0; k < ladder.size(); ++k) {
+        if (!stable(ladder[k]) || !(relative_omega_error(ladder[k]) <= tolerance)) continue;
+        if (k == 0) {
+            r.predicted_error = relative_omega_error(ladder[0]), r.how = "stability-bound";
+            return dt0;
+        }
+        const RunResult &c = ladder[k - 1], &f = ladder[k];
+        if (!stable(c)) {
+            r.predicted_error = relative_omega_error(f), r.how = "measured";
+            return f.spec.dt;
+        }
+        const double target = std::max(advice_error_margin * tolerance, relative_omega_error(f));
+        r.predicted_error = target, r.how = "interpolated" + extrapolated;
+        return interpolated_dt(c, f, target);
+    }
+    return NAN;
+}
+
 Outcome advise_one(Executor& executor, const StabilityProbe& probe, const ParamOverrides& params, double t_end, double tolerance,
                    const std::string& scheme, bool verify) {
     Outcome o;
@@ -82,21 +106,7 @@ Outcome advise_one(Executor& executor, const StabilityProbe& probe, const ParamO
         extrapolated = fmt::format(" (after extrapolating with order {:.2f})", fit.order);
         add_rung(next);
     }
-    double dt = NAN;
-    for (std::size_t k = 0; k < ladder.size() && std::isnan(dt); ++k) {
-        if (!meets(ladder[k])) continue;
-        if (k == 0) {
-            dt = dt0, o.r.predicted_error = relative_omega_error(ladder[0]), o.r.how = "stability-bound";
-        } else if (const RunResult &c = ladder[k - 1], &f = ladder[k]; !stable(c)) {
-            dt = f.spec.dt, o.r.predicted_error = relative_omega_error(f), o.r.how = "measured";
-        } else {
-            const double target = std::max(advice_error_margin * tolerance, relative_omega_error(f));
-            const double lc = std::log(relative_omega_error(c)), lf = std::log(relative_omega_error(f));
-            const double w = (std::log(target) - lf) / (lc - lf);
-            dt = std::exp(std::log(f.spec.dt) + w * (std::log(c.spec.dt) - std::log(f.spec.dt)));
-            o.r.predicted_error = target, o.r.how = "interpolated" + extrapolated;
-        }
-    }
+    const double dt = chosen_dt(ladder, dt0, tolerance, extrapolated, o.r);
     if (std::isnan(dt))
         return {false, o.r, fmt::format("does not reach {:g} down to {:.3g} s", tolerance, ladder.back().spec.dt)};
     if (t_end / dt > advice_max_steps)

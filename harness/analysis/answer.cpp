@@ -19,6 +19,12 @@ double seconds_at(const RunResult& r, double dt) { return r.value(metric::ns_per
 }  // namespace
 
 
+double interpolated_dt(const RunResult& coarse, const RunResult& fine, double error) {
+    const double lc = std::log(relative_omega_error(coarse)), lf = std::log(relative_omega_error(fine));
+    const double w = (std::log(error) - lf) / (lc - lf);  // 0 at the fine run, 1 at the coarse
+    return std::exp(std::log(fine.spec.dt) + w * (std::log(coarse.spec.dt) - std::log(fine.spec.dt)));
+}
+
 LargestDt largest_dt(const std::vector<const RunResult*>& runs, const OrderRow& order, double tolerance) {
     LargestDt a{order.scene, order.scheme, tolerance, "never", NAN, NAN, NAN, ""};
     std::vector<const RunResult*> ok;  // the dt is judged by the errors alone, timed or not
@@ -34,10 +40,7 @@ LargestDt largest_dt(const std::vector<const RunResult*>& runs, const OrderRow& 
     for (std::size_t i = 0; i < ok.size(); ++i) {
         if (!(relative_omega_error(*ok[i]) <= tolerance)) continue;
         if (i == 0) return set("at most", *ok[0], ok[0]->spec.dt);
-        const RunResult &c = *ok[i - 1], &f = *ok[i];
-        const double lc = std::log(relative_omega_error(c)), lf = std::log(relative_omega_error(f));
-        const double w = (std::log(tolerance) - lf) / (lc - lf);  // 0 at f, 1 at c
-        return set("interpolated", f, std::exp(std::log(f.spec.dt) + w * (std::log(c.spec.dt) - std::log(f.spec.dt))));
+        return set("interpolated", *ok[i], interpolated_dt(*ok[i - 1], *ok[i], tolerance));
     }
     if (order.status != OrderStatus::fit || order.fit.order <= 0.1) return a;
     const RunResult& finest = *ok.back();

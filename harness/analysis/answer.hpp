@@ -29,6 +29,10 @@ struct LargestDt {
     std::string limit_from;  // where dt_limit comes from
 };
 
+// The dt at which the relative error reaches `error`, log-log between a coarse and a fine run whose
+// errors bracket it (the error taken as a power of dt between them).
+double interpolated_dt(const RunResult& coarse, const RunResult& fine, double error);
+
 // From the runs of one scheme on one scene and the fit of its omega_err_max.
 LargestDt largest_dt(const std::vector<const RunResult*>& runs, const OrderRow& order, double tolerance);
 
