@@ -57,15 +57,15 @@ nlohmann::ordered_json vec(const Vec3& v) { return {v.x(), v.y(), v.z()}; }
 
 // The rows of the program's trajectory, or why they are not one.
 std::string read_rows(const fs::path& file, std::int64_t steps, double dt, std::vector<Row>& rows) {
-    if (!fs::exists(file)) return "its program wrote no trajectory.csv";
     // Sized before it is read: the rows due, at 64 bytes a number at most, bound it; the reader
     // would otherwise hold the whole file and a string per field (40-75 bytes a byte).
+    const std::string name = "its trajectory.csv";
     const double most_bytes = 4096.0 + 64.0 * 8.0 * static_cast<double>(steps + 1);
-    if (std::error_code ec; static_cast<double>(fs::file_size(file, ec)) > most_bytes && !ec)
-        return fmt::format("its trajectory.csv is larger than {} rows of 8 numbers can make it ({:.0f} bytes)", steps + 1, most_bytes);
+    std::string text;
+    if (const std::string why = read_program_output(file, name, most_bytes, fmt::format("{} rows of 8 numbers", steps + 1), text); !why.empty())
+        return why;
     try {
-        const std::string name = "its trajectory.csv";
-        const auto records = read_csv(read_input_file(file, name), name, client_trajectory_header);
+        const auto records = read_csv(text, name, client_trajectory_header);
         const auto columns = split_commas(client_trajectory_header);
         // Row by row first, so that a wrong value is named by its line and column (FILE:LINE:COLUMN).
         for (std::size_t k = 0; k < records.size() && static_cast<std::int64_t>(k) <= steps; ++k) {

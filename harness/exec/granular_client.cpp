@@ -131,24 +131,14 @@ RunResult replay_granular_samples(const RunSpec& spec, GranularScene& scene, con
         return result;
     };
     const std::string name = "its samples.csv";
-    std::error_code ec;
-    const auto status = std::filesystem::symlink_status(file, ec);
-    if (ec || !std::filesystem::exists(status)) return fail("its program wrote no samples.csv");
-    // Read only as a regular file: a FIFO would wait for a writer that never comes.
-    if (!std::filesystem::is_regular_file(status)) return fail(name + " is not a regular file (a FIFO, a link or a device)");
     const SampleSteps due = granular_sample_steps(scene, spec.dt);
     const std::size_t count = scene.initial_state().size(), shapes = scene.system().shapes().size();
     const std::int64_t last = due.first <= steps ? due.first + (steps - due.first) / due.stride * due.stride : due.first - due.stride;
-    // Read a line at a time, and never more than every stone in every sample at 64 bytes a number.
+    // Never more than every stone in every sample at 64 bytes a number.
     const double most_bytes = 64.0 * 16.0 * static_cast<double>(count) * static_cast<double>((last - due.first) / due.stride + 1) + 4096.0;
-    if (static_cast<double>(std::filesystem::file_size(file, ec)) > most_bytes || ec)
-        return fail(fmt::format("{} is larger than every stone in every sample can make it ({:.0f} bytes)", name, most_bytes));
-    std::istringstream in;
-    try {
-        in.str(read_input_file(file, name));  // opened without blocking, a regular file or refused
-    } catch (const InputError& e) {
-        return fail(e.what());
-    }
+    std::string text;
+    if (const std::string why = read_program_output(file, name, most_bytes, "every stone in every sample", text); !why.empty()) return fail(why);
+    std::istringstream in(text);
     const auto probe = scene.make_probe();
     std::string line;
     if (!std::getline(in, line) || line != granular_samples_header)

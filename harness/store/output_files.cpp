@@ -153,6 +153,22 @@ void append_to_file(const std::filesystem::path& path, const std::string& conten
     if (error != 0) throw OutputError(fmt::format("cannot write {}: {}", path.string(), std::strerror(error)));
 }
 
+std::string read_program_output(const std::filesystem::path& file, const std::string& name, double most_bytes, const std::string& bound,
+                                std::string& text) {
+    std::error_code ec;
+    const auto status = std::filesystem::symlink_status(file, ec);
+    if (ec || !std::filesystem::exists(status)) return "its program wrote no " + file.filename().string();
+    if (!std::filesystem::is_regular_file(status)) return name + " is not a regular file (a FIFO, a link or a device)";
+    if (static_cast<double>(std::filesystem::file_size(file, ec)) > most_bytes || ec)
+        return fmt::format("{} is larger than {} can make it ({:.0f} bytes)", name, bound, most_bytes);
+    try {
+        text = read_input_file(file, name);  // opened without blocking: a file swapped in between is refused
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "";
+}
+
 bool feed_file(const std::filesystem::path& path, Fnv1a& hash) {
     const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
     if (fd < 0) return false;

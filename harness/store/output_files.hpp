@@ -46,6 +46,12 @@ void release_child_group(pid_t group);
 // at once, for a symbolic link, a FIFO, a device or a directory.
 void append_to_file(const std::filesystem::path& path, const std::string& content);
 
+// A file another program wrote (a client's trajectory.csv or samples.csv), called `name` in
+// messages: "" with its text in `text` when it is a regular file of at most `most_bytes` (what
+// `bound` says can make it), else why not; never waits on a FIFO, never reads a file too large.
+std::string read_program_output(const std::filesystem::path& file, const std::string& name, double most_bytes, const std::string& bound,
+                                std::string& text);
+
 // Feeds a regular file's bytes to `hash` a block at a time, so that a file of gigabytes (a
 // plug-in, a client's interpreter) is never held whole; false when it is not a regular file
 // that can be read.
