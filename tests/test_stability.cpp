@@ -5,6 +5,7 @@
 #include "harness/exec/stability.hpp"
 #include "harness/analysis/stability_study.hpp"
 #include "schemes/scheme.hpp"
+#include "tests/misbehaving_schemes.hpp"
 
 #include <catch2/catch.hpp>
 #include <sstream>
@@ -111,21 +112,8 @@ TEST_CASE("rotation-dominant (fast_spin, eq. 57): the limits scale as 1/w_max, a
     CHECK(std::isinf(find("munjiza_rk4", 100.0).dt_empirical));  // H exact, exponential map: no limit found
 }
 
-namespace {
-template <class S = double>
-struct ThrowsInPredict {  // test only: a scheme with a bug
-    template <class T>
-    using rebind = ThrowsInPredict<T>;
-    struct Memory {};
-    static void start(const RigidBodyT<S>&, Memory&) {}
-    static void predict(RigidBodyT<S>&, Memory&, double) { throw std::runtime_error("scheme bug"); }
-    static void correct(RigidBodyT<S>&, Memory&, double) {}
-};
-const RegisterScheme<ThrowsInPredict<>> throwing("test_stability_throws", "test only: throws", "tests", "", {.sound = false});
-}  // namespace
-
 TEST_CASE("a scheme that throws is unstable at every dt in both analyses, and the study goes on") {
-    const auto rows = rows_of({"sphere_pair"}, {"test_stability_throws", "direct"}, {0.0}, {});
+    const auto rows = rows_of({"sphere_pair"}, {"test_throws", "direct"}, {0.0}, {});
     REQUIRE(rows.size() == 2);
     CHECK(rows[0].dt_empirical == 0.0);
     CHECK(rows[0].dt_amplification == 0.0);
