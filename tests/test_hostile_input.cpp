@@ -94,56 +94,60 @@ TEST_CASE("hostile inputs: shell metacharacters in a path are just characters") 
     fs::remove_all(dir);
 }
 
-TEST_CASE("hostile inputs: a forged shard.csv is refused before anything is sized by it") {
+TEST_CASE("hostile inputs: a slice's forged place in the plan is refused before anything is sized by it") {
     const fs::path dir = fresh_dir("forged_shards");
     for (const char* k : {"1", "2"})
         REQUIRE(cli({"run", "--scenes", "dipole_top", "--schemes", "direct", "--dt", "1e-2,5e-3,2.5e-3", "--shard", std::string(k) + "/2",
                      "--out", (dir / k).string()})
                     .status == 0);
     REQUIRE(cli({"merge", (dir / "1").string(), (dir / "2").string(), "--out", (dir / "merged").string()}).status == 0);
-    const std::string shard = read(dir / "1" / "shard.csv");
-    // The second row's fields: plan_id,shard,shards,plan_size,plan_index,...
-    const auto forged = [&](int field, const std::string& value) {
-        const std::size_t row = shard.find('\n') + 1;
-        std::size_t begin = row;
-        for (int i = 0; i < field; ++i) begin = shard.find(',', begin) + 1;
-        const std::size_t end = shard.find(',', begin);
+    const std::string store = read(dir / "1" / "runs.jsonl");
+    // The second record's place: {"id":...,"index":2,"shard":1,"shards":2,"size":3}
+    const auto forged = [&](const std::string& key, const std::string& value) {
+        const std::size_t record = store.find('\n') + 1;
+        const std::size_t begin = store.find("\"" + key + "\":", store.find("\"plan\":", record)) + key.size() + 3;
+        const std::size_t end = store.find_first_of(",}", begin);
         fs::remove_all(dir / "forged");
         fs::copy(dir / "1", dir / "forged", fs::copy_options::recursive);
-        write(dir / "forged" / "shard.csv", shard.substr(0, begin) + value + shard.substr(end));
+        write(dir / "forged" / "runs.jsonl", store.substr(0, begin) + value + store.substr(end));
         return std::vector<std::string>{"merge", (dir / "forged").string(), (dir / "2").string(), "--out", (dir / "out").string()};
     };
-    for (const auto& [field, value, message] : std::vector<std::tuple<int, std::string, std::string>>{
-             {3, "1000000000000000000", "in a plan of 1000000000000000000 runs cannot hold 2 runs"},
-             {3, "1e300", "'1e300' is not a count (plan_size)"},
-             {3, "-1", "is not a count"},
-             {3, "nan", "is not a count"},
-             {2, "99999999999", "cannot hold"},
-             {2, "999", "a slice of another sweep (plan"},  // its other rows say 2
-             {1, "0", "cannot hold"},
-             {4, "99999999999", "does not match runs.jsonl"},
+    for (const auto& [key, value, message] : std::vector<std::tuple<std::string, std::string, std::string>>{
+             {"size", "1000000000000000000", "in a plan of 1000000000000000000 runs cannot hold 2 runs"},
+             {"size", "1e300", "plan size 1e+300 is not a count"},
+             {"size", "-1", "plan size -1 is not a count"},
+             {"size", "\"nan\"", "is not a count"},
+             {"shards", "99999999999", "cannot hold"},
+             {"shards", "3", "a slice of another sweep (plan"},  // the first record says 2
+             {"shard", "0", "cannot hold"},
+             {"shard", "2", "is not a place of shard 1 of 2"},
+             {"index", "99999999999", "plan index 99999999999 is not a place of shard 1 of 2"},
+             {"index", "1", "plan index 1 is not a place of shard 1 of 2"},  // shard 2's
+             {"index", "0", "plan index 0 is not a place of shard 1 of 2"},  // the first record's
          }) {
-        const auto args = forged(field, value);
+        const auto args = forged(key, value);
         const Cli r = cli(args);
-        INFO(value << " -> " << r.err);
+        INFO(key << " " << value << " -> " << r.err);
         CHECK(r.status == 2);
         CHECK(one_line(r.err));
         CHECK_THAT(r.err, Catch::Contains(message));
         CHECK_FALSE(fs::exists(dir / "out"));
     }
-    // A run store edited to hold another duration, step or parameters than the run its row names:
+    // A run store edited to hold another duration, step or parameters than the plan its runs name:
     // the merged folder would differ from the unsharded run's, so it is refused.
     for (const auto& edit : std::vector<std::function<void(rotbench::RunSpec&)>>{
              [](rotbench::RunSpec& s) { s.t_end = 2.0 * s.t_end; }, [](rotbench::RunSpec& s) { s.dt = s.dt / 2; },
              [](rotbench::RunSpec& s) { s.params = {{"field", {0.0, 0.0, 2.0}}}; }}) {
         fs::remove_all(dir / "forged");
         fs::copy(dir / "1", dir / "forged", fs::copy_options::recursive);
-        std::vector<rotbench::RunResult> runs = rotbench::read_results(dir / "forged");
-        edit(runs.front().spec);
-        write(dir / "forged" / "runs.jsonl", rotbench::run_store(runs));
+        rotbench::StoredRuns stored = rotbench::read_run_store(dir / "forged");
+        edit(stored.runs.front().spec);
+        std::vector<rotbench::PlanPlace> places;
+        for (const auto& place : stored.places) places.push_back(place.value());
+        write(dir / "forged" / "runs.jsonl", rotbench::run_store(stored.runs, places));
         const Cli r = cli({"merge", (dir / "forged").string(), (dir / "2").string(), "--out", (dir / "out").string()});
         CHECK(r.status == 2);
-        CHECK_THAT(r.err, Catch::Contains("does not match runs.jsonl"));
+        CHECK_THAT(r.err, Catch::Contains("the slices' runs do not make the plan they name"));
         CHECK_FALSE(fs::exists(dir / "out"));
     }
     fs::remove_all(dir);

@@ -4,7 +4,7 @@
 // gives; a signal stops a sweep whose plug-in hangs at once.
 #include "harness/analysis/stability_study.hpp"
 #include "harness/exec/isolation.hpp"
-#include "harness/analysis/stability_csv.hpp"
+#include "harness/store/results_csv.hpp"
 #include "tests/cli_helpers.hpp"
 
 #include <algorithm>
@@ -170,7 +170,7 @@ TEST_CASE("isolation: `stability` records a plug-in that crashes or hangs as a f
                        "--out", dir.string()});
     INFO(r.err);
     REQUIRE(r.status == 0);
-    const auto rows = read_stability(dir);  // stability.csv and stability_spin.csv, read back as `report` reads them
+    const auto rows = stability_study(read_results(dir, stability_store), "store").rows;  // read back as `report` reads them
     std::map<std::string, int> failed, measured;
     for (const auto& row : rows) {
         INFO(row.scheme << " on " << row.scene);

@@ -3,9 +3,12 @@
 #include "cli_helpers.hpp"
 #include "harness/store/results_csv.hpp"
 #include "harness/analysis/stability_csv.hpp"
+#include "harness/analysis/stability_study.hpp"
 
 #include <catch2/catch.hpp>
+#include <algorithm>
 #include <cmath>
+#include <functional>
 #include <fmt/format.h>
 #include <map>
 #include <regex>
@@ -111,8 +114,8 @@ TEST_CASE("the report of a quick run with its stability study") {
         CHECK(status["asymmetric_free/no_gyro"] == "no_convergence");
         CHECK(status["asymmetric_free/fincham"] == "fit");
     }
-    SECTION("stability.csv carries each row's kind and reads back to the same file") {
-        const auto rows = read_stability(report_dir());
+    SECTION("stability.csv carries each row's kind, and the study read back from its store gives the same files") {
+        const auto rows = stability_study(read_results(report_dir(), stability_store), "store").rows;
         REQUIRE(rows.size() == 5 * 2 + 5);  // two damping ratios on sphere_pair, one spin rate on fast_spin
         std::map<std::string, std::string> kind;
         for (const auto& r : rows) kind[r.scene + "/" + r.scheme + "/" + std::to_string(r.zeta)] = stability_kind(r);
@@ -209,28 +212,28 @@ TEST_CASE("an energy plot is scaled to the runs that did not blow up, and says w
     CHECK_THAT(script, Catch::Contains("set autoscale y\nplot '../series/energy_ellipsoid_pair_richardson"));
 }
 
-TEST_CASE("a stability.csv that rotbench stability could not have written is refused, naming the line") {
-    const fs::path dir = fs::temp_directory_path() / ("rotbench_stability_forged_" + std::to_string(::getpid()));
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    const std::string header = "scene,scheme,zeta,kind,dt_empirical,dt_amplification,dt_peng,dt_verlet_normal\n";
-    const std::string good = "sphere_pair,direct,0,sharp,0.000173,0.000173,0.000173,0.000324\n";
-    write_file_atomically(dir / "stability.csv", header + good);
-    REQUIRE(read_stability(dir).size() == 1);
-    for (const auto& [row, message] : std::vector<std::pair<std::string, std::string>>{
-             {"silo_discharge,direct,0,sharp,1,1,1,1\n", "scene 'silo_discharge' is not a stability scene"},
-             {"sphere_pair,dir ect,0,sharp,1,1,1,1\n", "'dir ect' is not a scheme id"},
-             {"sphere_pair,zvw,-0.1,sharp,1,1,1,1\n", "zeta must be a finite damping ratio"},
-             {"sphere_pair,zvw,0,sharp,inf,1,1,1\n", "kind 'sharp' does not go with dt_empirical inf"},
-             {"sphere_pair,zvw,0,none,0.001,1,1,1\n", "kind 'none' does not go with dt_empirical 0.001"},
-             {"sphere_pair,zvw,0,weak,-1,1,1,1\n", "a negative time step"},
-             {"sphere_pair,zvw,0,sharp,1,1,0,1\n", "dt_peng must be a positive time step"},
-             {good, "sphere_pair direct is there twice"},
+TEST_CASE("a stability store holding a run no stability study makes is refused, naming the run") {
+    const std::vector<RunResult> made = parse_run_store(read(report_dir() / stability_store), "made");
+    REQUIRE_NOTHROW(stability_study(made, "store"));
+    const auto forged = [&](const std::function<void(std::vector<RunResult>&)>& edit) {
+        std::vector<RunResult> runs = made;
+        edit(runs);
+        return runs;
+    };
+    const auto first_search = [](std::vector<RunResult>& runs) -> RunResult& {
+        return *std::find_if(runs.begin(), runs.end(), [](const RunResult& r) { return r.spec.kind == RunKind::stability; });
+    };
+    for (const auto& [runs, message] : std::vector<std::pair<std::vector<RunResult>, std::string>>{
+             {forged([&](auto& runs) { first_search(runs).spec.scene = "silo_discharge"; }), "is not a stability scene"},
+             {forged([&](auto& runs) { first_search(runs).spec.kind = RunKind::trajectory; }), "a trajectory run is not a stability study's"},
+             {forged([&](auto& runs) { first_search(runs).spec.params = {{"zeta", {-0.1}}}; }), "zeta"},
+             {forged([&](auto& runs) { first_search(runs).spec.params = {{"omega_max", {100}}}; }), "its parameters are not one zeta"},
+             {forged([&](auto& runs) { first_search(runs).metrics = {{metric::dt_empirical, -1.0}}; }), "its limit -1 is not a time step"},
+             {forged([&](auto& runs) { runs.push_back(first_search(runs)); }), "is there twice"},
+             {forged([&](auto& runs) { runs.erase(runs.begin() + (&first_search(runs) - runs.data())); }), "has an eigenvalue limit and no search"},
          }) {
-        INFO(row);
-        write_file_atomically(dir / "stability.csv", header + good + row);
-        CHECK_THROWS_AS(read_stability(dir), InputError);
-        CHECK_THROWS_WITH(read_stability(dir), Catch::Contains((dir / "stability.csv").string() + ":3") && Catch::Contains(message));
+        INFO(message);
+        CHECK_THROWS_AS(stability_study(runs, "store"), InputError);
+        CHECK_THROWS_WITH(stability_study(runs, "store"), Catch::Contains("store") && Catch::Contains(message));
     }
-    fs::remove_all(dir);
 }

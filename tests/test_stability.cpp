@@ -2,6 +2,7 @@
 // predictions of Peng et al. (seed 004). The findings are pinned so they cannot change
 // silently.
 #include "harness/scenes/contact_pair.hpp"
+#include "harness/exec/executor.hpp"
 #include "harness/exec/stability.hpp"
 #include "harness/analysis/stability_study.hpp"
 #include "schemes/scheme.hpp"
@@ -19,7 +20,7 @@ std::vector<StabilityRow> rows_of(const std::vector<std::string>& scenes, const 
                                   const std::vector<double>& zetas, const std::vector<double>& omegas) {
     std::ostringstream out, err;
     Executor executor(out, err, {.jobs = 2, .quiet = true});
-    return stability_study(executor, scenes, schemes, zetas, omegas).rows;
+    return stability_study(executor.run(stability_plan(scenes, schemes, zetas, omegas)), "study").rows;
 }
 
 const std::vector<StabilityRow>& study() {

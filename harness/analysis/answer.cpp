@@ -1,6 +1,7 @@
 #include "harness/analysis/answer.hpp"
 
 #include "harness/store/csv.hpp"
+#include "harness/store/output_files.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,9 +1,8 @@
-// The stability study's CSV files, written and read back (rotbench report merges them).
+// The stability study's CSV files: exports of its runs (stability.jsonl), never read back.
 #pragma once
 
 #include "harness/analysis/stability_study.hpp"
 
-#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -15,9 +14,5 @@ namespace rotbench {
 // `kind` is stability_kind(): sharp, weak or none.
 std::string stability_csv(const std::vector<StabilityRow>& rows);
 std::string stability_spin_csv(const std::vector<StabilityRow>& rows);
-
-// Both files of `dir` (stability_spin.csv may be absent), every field checked; InputError
-// naming the file and line otherwise.
-std::vector<StabilityRow> read_stability(const std::filesystem::path& dir);
 
 }  // namespace rotbench

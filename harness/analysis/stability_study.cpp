@@ -3,10 +3,14 @@
 #include "harness/exec/run_kinds.hpp"
 #include "harness/scenes/contact_pair.hpp"
 #include "harness/scenes/stability_probe.hpp"
+#include "harness/store/output_files.hpp"
 #include "harness/store/parse.hpp"
+
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 
 namespace rotbench {
 
@@ -24,66 +28,108 @@ void check_stability_scenes(const std::vector<std::string>& scenes) {
             throw InputError("scene '" + scene + "' is not a stability scene; valid: " + join(valid, ", "));
 }
 
-StabilityStudy stability_study(Executor& executor, const std::vector<std::string>& scenes, const std::vector<std::string>& schemes,
-                               const std::vector<double>& zetas, const std::vector<double>& omegas) {
+namespace {
+
+// The parameter a stability case varies: the damping ratio of a contact, fast_spin's spin rate.
+std::string varied(const std::string& scene) { return scene == "fast_spin" ? "omega_max" : "zeta"; }
+
+bool linearisable(const Scene& scene) { return dynamic_cast<const StabilityProbe&>(scene).linearisable_at_rest(); }
+
+// The index of the row a stability or amplification run belongs to, made (with the scene's predictions) if new.
+std::size_t row_of(StabilityStudy& study, const RunSpec& spec, const std::string& at) {
+    const std::string key = varied(spec.scene);
+    if (spec.params.size() != 1 || spec.params[0].first != key || spec.params[0].second.size() != 1)
+        throw InputError(at + ": its parameters are not one " + key);
+    const double value = spec.params[0].second[0];
+    const bool spin = key == "omega_max";
+    for (std::size_t i = 0; i < study.rows.size(); ++i) {
+        const StabilityRow& r = study.rows[i];
+        if (r.scene == spec.scene && r.scheme == spec.scheme && (spin ? r.omega_max : r.zeta) == value) return i;
+    }
+    std::unique_ptr<Scene> scene;
+    try {
+        scene = make_scene(spec.scene, spec.params);
+    } catch (const InputError& e) {
+        throw InputError(at + ": " + e.what());
+    }
+    const auto* pair = dynamic_cast<const ContactPairScene*>(scene.get());
+    study.rows.push_back({spec.scene, spec.scheme, spin ? 0.0 : value, spin ? value : 0.0, NAN, NAN,
+                          dynamic_cast<const StabilityProbe&>(*scene).predicted_limit(), pair ? pair->verlet_normal_limit() : NAN});
+    return study.rows.size() - 1;
+}
+
+SpectralCurve curve_of(const RunResult& run) {
+    const auto scene = make_scene(run.spec.scene);
+    SpectralCurve curve{run.spec.scene, run.spec.scheme, dynamic_cast<const StabilityProbe&>(*scene).predicted_limit(), {}, run.failure};
+    const bool whole = run.series.size() == spectral_points &&
+                       std::all_of(run.series.begin(), run.series.end(), [](const auto& point) { return point.size() == 2; });
+    if (curve.failure.empty() && !whole) curve.failure = "its run did not give a spectral curve";
+    if (curve.failure.empty())
+        for (const auto& point : run.series) curve.points.push_back({point.at(0), point.at(1)});
+    return curve;
+}
+
+}  // namespace
+
+std::vector<RunSpec> stability_plan(const std::vector<std::string>& scenes, const std::vector<std::string>& schemes,
+                                    const std::vector<double>& zetas, const std::vector<double>& omegas) {
     check_stability_scenes(scenes);
-    StabilityStudy study;
-    std::vector<RunSpec> tasks;
-    std::vector<std::size_t> search_of, amplification_of, curve_of;  // the index of each row's tasks (none: -1) and each curve's
-    const auto add = [&](const std::string& scene, const std::string& scheme, double t_end, const ParamOverrides& params, RunKind kind) {
-        tasks.push_back({scene, scheme, 0.0, t_end, params, kind, false});
-        return tasks.size() - 1;
-    };
+    std::vector<RunSpec> plan;
     for (const auto& id : scenes) {
-        const bool spin = id == "fast_spin";
-        for (double value : spin ? omegas : zetas) {
-            const ParamOverrides params = {{spin ? "omega_max" : "zeta", {value}}};
+        for (double value : id == "fast_spin" ? omegas : zetas) {
+            const ParamOverrides params = {{varied(id), {value}}};
             const auto scene = make_scene(id, params);
-            const auto& probe = dynamic_cast<const StabilityProbe&>(*scene);
-            const auto* pair = dynamic_cast<const ContactPairScene*>(scene.get());
             for (const auto& scheme : schemes) {
-                study.rows.push_back({id, scheme, spin ? 0.0 : value, spin ? value : 0.0});
-                StabilityRow& r = study.rows.back();
-                r.dt_peng = probe.predicted_limit();
-                r.dt_verlet_normal = pair ? pair->verlet_normal_limit() : NAN;
-                r.dt_amplification = NAN;
-                search_of.push_back(add(id, scheme, scene->t_end(), params, RunKind::stability));
-                amplification_of.push_back(probe.linearisable_at_rest() ? add(id, scheme, scene->t_end(), params, RunKind::amplification)
-                                                                        : std::size_t(-1));
+                plan.push_back({id, scheme, 0.0, scene->t_end(), params, RunKind::stability, false});
+                if (linearisable(*scene)) plan.push_back({id, scheme, 0.0, scene->t_end(), params, RunKind::amplification, false});
             }
         }
         const auto scene = make_scene(id);  // the curves: undamped (the contact scenes' default zeta is 0)
-        const auto& probe = dynamic_cast<const StabilityProbe&>(*scene);
-        if (!probe.linearisable_at_rest()) continue;
-        for (const auto& scheme : schemes) {
-            study.curves.push_back({id, scheme, probe.predicted_limit(), {}, {}});
-            curve_of.push_back(add(id, scheme, scene->t_end(), {}, RunKind::spectral));
-        }
+        if (linearisable(*scene))
+            for (const auto& scheme : schemes) plan.push_back({id, scheme, 0.0, scene->t_end(), {}, RunKind::spectral, false});
     }
+    return plan;
+}
 
-    const std::vector<RunResult> runs = executor.run(tasks);
-    if (executor.signal()) return study;
+StabilityStudy stability_study(const std::vector<RunResult>& runs, const std::string& name) {
+    StabilityStudy study;
+    std::set<RunSpec> seen;
+    std::vector<std::pair<const RunResult*, const RunResult*>> made;  // each row's search and amplification
+    for (std::size_t i = 0; i < runs.size(); ++i) {
+        const RunSpec& spec = runs[i].spec;
+        const std::string at = fmt::format("{}: run {}", name, i);
+        if (!seen.insert(spec).second) throw InputError(at + ": " + spec.scene + " " + spec.scheme + " is there twice");
+        try {
+            check_stability_scenes({spec.scene});
+        } catch (const InputError& e) {
+            throw InputError(at + ": " + e.what());
+        }
+        if (spec.kind == RunKind::spectral) {
+            if (!spec.params.empty()) throw InputError(at + ": a spectral curve is undamped, without parameters");
+            study.curves.push_back(curve_of(runs[i]));
+            continue;
+        }
+        if (spec.kind != RunKind::stability && spec.kind != RunKind::amplification)
+            throw InputError(at + ": a " + kind_name(spec.kind) + " run is not a stability study's");
+        const std::size_t row = row_of(study, spec, at);
+        made.resize(study.rows.size());
+        auto& [search, amplification] = made[row];
+        (spec.kind == RunKind::stability ? search : amplification) = &runs[i];
+        const double dt = runs[i].value(spec.kind == RunKind::stability ? metric::dt_empirical : metric::dt_amplification);
+        if (runs[i].failure.empty() && !(dt >= 0)) throw InputError(at + ": its limit " + format_number(dt) + " is not a time step");
+    }
     for (std::size_t i = 0; i < study.rows.size(); ++i) {
         StabilityRow& r = study.rows[i];
-        const RunResult& search = runs[search_of[i]];
-        r.failure = search.failure;
-        r.dt_empirical = search.value(metric::dt_empirical);
-        if (const std::size_t a = amplification_of[i]; a < runs.size()) {
-            if (r.failure.empty()) r.failure = runs[a].failure;
-            r.dt_amplification = runs[a].value(metric::dt_amplification);
-            r.unstable_at_every_dt = runs[a].value(metric::unstable_at_every_dt) == 1.0;
+        const auto [search, amplification] = made[i];
+        if (!search) throw InputError(name + ": " + r.scene + " " + r.scheme + " has an eigenvalue limit and no search");
+        r.failure = search->failure;
+        r.dt_empirical = search->value(metric::dt_empirical);
+        if (amplification) {
+            if (r.failure.empty()) r.failure = amplification->failure;
+            r.dt_amplification = amplification->value(metric::dt_amplification);
+            r.unstable_at_every_dt = amplification->value(metric::unstable_at_every_dt) == 1.0;
         }
         if (!r.failure.empty()) r.dt_empirical = r.dt_amplification = NAN, r.unstable_at_every_dt = false;
-    }
-    for (std::size_t k = 0; k < study.curves.size(); ++k) {
-        SpectralCurve& curve = study.curves[k];
-        const RunResult& run = runs[curve_of[k]];
-        curve.failure = run.failure;
-        const bool whole = run.series.size() == spectral_points &&
-                           std::all_of(run.series.begin(), run.series.end(), [](const auto& point) { return point.size() == 2; });
-        if (curve.failure.empty() && !whole) curve.failure = "its run did not give a spectral curve";
-        if (curve.failure.empty())
-            for (const auto& point : run.series) curve.points.push_back({point.at(0), point.at(1)});
     }
     return study;
 }

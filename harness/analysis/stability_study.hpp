@@ -1,10 +1,10 @@
 // `rotbench stability`: every selected scheme on every selected contact scene and damping
 // ratio; the measured limit, the eigenvalue limit and Peng et al.'s prediction, and the
 // spectral radius of each scheme's step map against dt. Every scheme's work is a run
-// (kinds stability, amplification, spectral) made by the executor.
+// (kinds stability, amplification, spectral) made by the executor and kept in the run store.
 #pragma once
 
-#include "harness/exec/executor.hpp"
+#include "harness/core/run.hpp"
 
 #include <string>
 #include <utility>
@@ -46,10 +46,19 @@ struct StabilityStudy {
     std::vector<SpectralCurve> curves;
 };
 
-// Contact scenes run once per zeta, fast_spin once per omega_max; the eigenvalue limit is
-// NaN where the scene's state is not an equilibrium at rest. Interrupted: the executor's
-// signal() is set and the study is incomplete.
-StabilityStudy stability_study(Executor& executor, const std::vector<std::string>& scenes, const std::vector<std::string>& schemes,
-                               const std::vector<double>& zetas, const std::vector<double>& omegas);
+// The study's store in an output folder: its runs, one record each (harness/store/run_record.hpp),
+// from which `report` builds the study again; stability.csv and stability_spin.csv are exports.
+inline constexpr const char* stability_store = "stability.jsonl";
+
+// The study's runs: contact scenes once per zeta, fast_spin once per omega_max, each scheme
+// searched (kind stability) and, where the scene linearises at rest, its eigenvalue limit
+// (amplification); then the undamped spectral curves (spectral).
+std::vector<RunSpec> stability_plan(const std::vector<std::string>& scenes, const std::vector<std::string>& schemes,
+                                    const std::vector<double>& zetas, const std::vector<double>& omegas);
+
+// The study those runs make, rows and curves in their order; the eigenvalue limit is NaN where
+// the scene's state is not an equilibrium at rest. InputError (naming `name`) for a run no
+// stability_plan makes, or one made twice: a store that was edited.
+StabilityStudy stability_study(const std::vector<RunResult>& runs, const std::string& name);
 
 }  // namespace rotbench

@@ -19,9 +19,7 @@ public:
     int run(const Invocation& how) override {
         const std::vector<std::filesystem::path> dirs(dirs_.begin(), dirs_.end());
         parse_tolerances(tolerances_);
-        // The slices of one sharded command, or whole runs (an ensemble grown in parts, other schemes).
-        const bool slices = std::filesystem::exists(std::filesystem::symlink_status(dirs.front() / "shard.csv"));
-        const auto results = slices ? merge_shards(dirs) : join_runs(dirs);
+        const auto results = merge_runs(dirs);
         const OutputDir out = OutputDir::open(out_, {"run", "results.csv", run_files, overwrite_});
         SchemeInfos recorded;  // what each slice ran: merge needs no --plugin to describe a plug-in's runs
         for (const auto& dir : dirs) recorded.merge(read_schemes(dir));

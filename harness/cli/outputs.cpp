@@ -8,7 +8,7 @@
 #include "harness/store/output_files.hpp"
 #include "harness/store/parse.hpp"
 #include "harness/store/results_csv.hpp"
-#include "harness/analysis/stability_csv.hpp"
+#include "harness/analysis/stability_study.hpp"
 #include "reports/markdown_report.hpp"
 
 #include <algorithm>
@@ -40,7 +40,8 @@ std::vector<double> parse_tolerances(const std::vector<std::string>& texts) {
 AnalysisOptions analysis_options(const std::vector<std::string>& tolerances, const fs::path& stability_dir) {
     AnalysisOptions options;
     options.tolerances = parse_tolerances(tolerances);
-    if (fs::exists(stability_dir / "stability.csv")) options.stability = read_stability(stability_dir);
+    if (fs::exists(stability_dir / stability_store))
+        options.stability = stability_study(read_results(stability_dir, stability_store), (stability_dir / stability_store).string()).rows;
     return options;
 }
 

@@ -31,7 +31,7 @@ void add_tolerance_option(CLI::App& command, std::vector<std::string>& texts);
 std::vector<double> parse_tolerances(const std::vector<std::string>& texts);
 
 // The analysis's options: the tolerances, and the stability study in `stability_dir` when it
-// holds a stability.csv.
+// holds its store.
 AnalysisOptions analysis_options(const std::vector<std::string>& tolerances, const std::filesystem::path& stability_dir);
 
 // The run files (harness/store/output_files.hpp), the analysis's (export_analysis) and report.md;

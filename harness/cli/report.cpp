@@ -1,6 +1,7 @@
 // `rotbench report DIR`: report.md and its plots again, from the run store a run left in DIR.
 #include "harness/analysis/analysis.hpp"
 #include "harness/analysis/ensemble.hpp"
+#include "harness/analysis/stability_study.hpp"
 #include "harness/cli/outputs.hpp"
 #include "harness/cli/verb.hpp"
 #include "harness/store/output_files.hpp"
@@ -22,7 +23,7 @@ public:
     int run(const Invocation& how) override {
         const AnalysisOptions options = analysis_options(tolerances_, stability_.empty() ? dir_ : stability_);
         if (!stability_.empty() && options.stability.empty())
-            throw InputError("--stability " + stability_ + ": no stability.csv there (rotbench stability --out writes one)");
+            throw InputError("--stability " + stability_ + ": no " + stability_store + " there (rotbench stability --out writes one)");
         const Analysis analysis = analyse(describe(collapse_ensembles(read_results(dir_)), read_schemes(dir_)), options);
         std::vector<std::string> written = analysis_files;
         written.push_back("report.md");

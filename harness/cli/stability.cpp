@@ -8,6 +8,7 @@
 #include "harness/exec/machine.hpp"
 #include "harness/store/output_files.hpp"
 #include "harness/store/parse.hpp"
+#include "harness/store/results_csv.hpp"
 #include "harness/analysis/stability_csv.hpp"
 #include "harness/scenes/scene.hpp"
 #include "reports/stability_report.hpp"
@@ -40,17 +41,19 @@ public:
         const auto omegas = parse_positive_list(omegas_, "--omega-max");
         check_stability_scenes(scenes);
         const OutputDir dir = OutputDir::open(how.resuming ? *how.resuming : fs::path(out_),
-                                              {"stability", "stability.csv", {"stability.csv", "stability_spin.csv", "stability.md"},
+                                              {"stability", "stability.csv",
+                                               {stability_store, "stability.csv", "stability_spin.csv", "stability.md"},
                                                overwrite_, how.resuming.has_value()});
         ExecOptions options{.jobs = jobs_, .quiet = quiet_, .verb = "stability"};
         isolation_.apply(options.run);
-        StabilityStudy study;
+        std::vector<RunResult> runs;
         {
             Executor executor = make_executor(how, &dir, options);
-            study = stability_study(executor, scenes, schemes, zetas, omegas);
+            runs = executor.run(stability_plan(scenes, schemes, zetas, omegas));
             if (executor.signal()) return executor.interrupted();
         }
-        const auto& [rows, curves] = study;
+        const auto [rows, curves] = stability_study(runs, stability_store);
+        dir.write(stability_store, run_store(runs));
         dir.write("stability.csv", stability_csv(rows));
         dir.write("stability_spin.csv", stability_spin_csv(rows));
         ResultSet families;  // the schemes' families, for the plots' panels

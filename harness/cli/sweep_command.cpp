@@ -49,9 +49,12 @@ Executor make_executor(const Invocation& how, const OutputDir* dir, ExecOptions 
 }
 
 void write_slice(const OutputDir& dir, const PlanSlice& slice, const std::vector<RunResult>& results, std::ostream& out) {
-    write_run_files(dir, results, results);  // the members of an ensemble: collapsed once merged
+    std::vector<PlanPlace> places;
+    for (std::size_t index : slice.indices)
+        places.push_back({slice.plan_id, static_cast<std::uint64_t>(slice.shard->index), static_cast<std::uint64_t>(slice.shard->count),
+                          slice.plan_size, index});
+    write_run_files(dir, results, results, {}, places);  // the members of an ensemble: collapsed once merged
     write_run_series(results, dir);
-    dir.write("shard.csv", shard_csv(slice.plan_id, slice.shard->index, slice.shard->count, results, slice.indices, slice.plan_size));
     out << fmt::format("wrote shard {}/{} ({} of {} runs) to {}; combine the shards with rotbench merge\n", slice.shard->index,
                        slice.shard->count, results.size(), slice.plan_size, dir.path().string());
 }

@@ -38,8 +38,9 @@ struct IsolationOptions {
 // there, and found there again when the command is resumed (how.resuming).
 Executor make_executor(const Invocation& how, const OutputDir* dir, ExecOptions options);
 
-// A slice's files for `rotbench merge`: results.csv, runs.csv, the energy series, shard.csv.
-inline const std::vector<std::string> slice_files = {"runs.jsonl", "schemes.json", "results.csv", "runs.csv", "shard.csv"};
+// A slice's files for `rotbench merge`: its run store, each run with its place in the plan, and
+// results.csv, runs.csv, the energy series.
+inline const std::vector<std::string> slice_files = {"runs.jsonl", "schemes.json", "results.csv", "runs.csv"};
 void write_slice(const OutputDir& dir, const PlanSlice& slice, const std::vector<RunResult>& results, std::ostream& out);
 
 

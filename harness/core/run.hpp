@@ -29,6 +29,10 @@ enum class RunKind { trajectory, reversal, stability, horizon, amplification, sp
 inline constexpr double energy_horizon = 8.0;
 const char* kind_name(RunKind kind);
 RunKind kind_from_name(const std::string& name);  // InputError for an unknown one
+// The stability study's kinds, which search or sweep dt themselves: their spec's dt is 0.
+inline bool finds_its_own_dt(RunKind kind) {
+    return kind == RunKind::stability || kind == RunKind::amplification || kind == RunKind::spectral;
+}
 
 struct RunSpec {
     std::string scene;

@@ -37,7 +37,7 @@ std::string& worker() {
 // Ten minutes for a stability search, an amplification limit or a spectral curve; otherwise
 // the time limit of its body-steps (each way of a reversal, both stretches of a horizon run).
 double default_timeout(const RunSpec& spec, const Scene& scene) {
-    if (spec.kind == RunKind::stability || spec.kind == RunKind::amplification || spec.kind == RunKind::spectral) return 600.0;
+    if (finds_its_own_dt(spec.kind)) return 600.0;
     const double body_steps = static_cast<double>(step_count(scene.t_end(), spec.dt)) * static_cast<double>(scene.initial_state().size());
     const double ways = spec.kind == RunKind::reversal  ? 2.0
                         : spec.kind == RunKind::horizon ? 1.0 + energy_horizon

@@ -31,6 +31,13 @@ public:
     explicit Planner(const GateFile& file) : file_(file) {}
 
     std::size_t run(RunSpec spec) {
+        // The scene's duration written out, as its run records it: a slice's runs must make the
+        // plan whose fingerprint they carry (harness/store/shard.hpp).
+        if (spec.t_end == 0.0) {
+            const auto [duration, fresh] = t_ends_.try_emplace({spec.scene, spec.params}, 0.0);
+            if (fresh) duration->second = make_scene(spec.scene, spec.params)->t_end();
+            spec.t_end = duration->second;
+        }
         const auto [it, fresh] = index_.try_emplace(spec, plan_.runs.size());
         if (fresh) plan_.runs.push_back(std::move(spec));
         return it->second;
@@ -155,6 +162,7 @@ private:
     const GateFile& file_;
     GatePlan plan_;
     std::map<RunSpec, std::size_t> index_;
+    std::map<std::pair<std::string, ParamOverrides>, double> t_ends_;  // each scene's default duration
 };
 
 }  // namespace

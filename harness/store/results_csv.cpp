@@ -56,7 +56,7 @@ namespace {
 void check_run(const RunResult& r, const std::string& at) {
     if (!is_id(r.spec.scene) || !is_id(r.spec.scheme)) throw InputError(at + ": a scene or scheme id that is not one");
     if (!(r.spec.t_end > 0.0) || !std::isfinite(r.spec.t_end) || !std::isfinite(r.spec.dt) || r.spec.dt < 0.0 ||
-        (r.spec.kind != RunKind::stability && !(r.spec.dt > 0.0)))
+        (!finds_its_own_dt(r.spec.kind) && !(r.spec.dt > 0.0)))
         throw InputError(at + ": dt or t_end out of range");
     for (const auto& [name, value] : r.metrics)
         if (!is_id(name)) throw InputError(at + ": '" + name + "' is not a metric name");
@@ -64,18 +64,18 @@ void check_run(const RunResult& r, const std::string& at) {
 
 }  // namespace
 
-std::string run_store(const std::vector<RunResult>& runs) {
+std::string run_store(const std::vector<RunResult>& runs, const std::vector<PlanPlace>& places) {
     std::string text;
-    for (std::size_t i = 0; i < runs.size(); ++i) text += run_record(i, runs[i]);
+    for (std::size_t i = 0; i < runs.size(); ++i) text += run_record(i, runs[i], places.empty() ? std::nullopt : std::optional(places.at(i)));
     return text;
 }
 
 void write_run_files(const OutputDir& dir, const std::vector<RunResult>& runs, const std::vector<RunResult>& tables,
-                     const SchemeInfos& recorded) {
+                     const SchemeInfos& recorded, const std::vector<PlanPlace>& places) {
     std::vector<std::string> schemes;
     for (const auto& r : runs) schemes.push_back(r.spec.scheme);
     dir.write("schemes.json", schemes_json(describe_schemes(schemes, recorded)));
-    dir.write("runs.jsonl", run_store(runs));
+    dir.write("runs.jsonl", run_store(runs, places));
     dir.write("results.csv", results_csv(tables));
     dir.write("runs.csv", runs_csv(tables));
 }
@@ -83,32 +83,36 @@ void write_run_files(const OutputDir& dir, const std::vector<RunResult>& runs, c
 namespace {
 
 // `size`: the bytes of the store, which its whole records must span.
-std::vector<RunResult> parse_run_store(std::istream& in, std::size_t size, const std::string& name) {
+StoredRuns parse_run_store(std::istream& in, std::size_t size, const std::string& name) {
     RunRecords records = parse_run_records(in, name);
     if (records.whole_length != size)
         throw InputError(fmt::format("{}: cut short or not a run store after {} runs", name, records.runs.size()));
     if (records.runs.empty()) throw InputError(name + ": no run in the store");
-    std::vector<RunResult> runs;
+    StoredRuns stored{{}, std::move(records.places)};
     for (auto& [index, run] : records.runs) {
         const std::string at = fmt::format("{}: run {}", name, index);
-        if (index != runs.size()) throw InputError(fmt::format("{}: run {} where run {} is due", name, index, runs.size()));
+        if (index != stored.runs.size()) throw InputError(fmt::format("{}: run {} where run {} is due", name, index, stored.runs.size()));
         check_run(run, at);
-        runs.push_back(std::move(run));
+        stored.runs.push_back(std::move(run));
     }
-    return runs;
+    return stored;
 }
 
 }  // namespace
 
 std::vector<RunResult> parse_run_store(const std::string& text, const std::string& name) {
     std::istringstream in(text);
-    return parse_run_store(in, text.size(), name);
+    return parse_run_store(in, text.size(), name).runs;
 }
 
-std::vector<RunResult> read_results(const std::filesystem::path& dir) {
-    const std::filesystem::path store = dir / "runs.jsonl";
-    std::ifstream in = open_input_stream(store, "cannot read");
-    return parse_run_store(in, std::filesystem::file_size(store), store.string());
+StoredRuns read_run_store(const std::filesystem::path& dir, const std::string& store) {
+    const std::filesystem::path path = dir / store;
+    std::ifstream in = open_input_stream(path, "cannot read");
+    return parse_run_store(in, std::filesystem::file_size(path), path.string());
+}
+
+std::vector<RunResult> read_results(const std::filesystem::path& dir, const std::string& store) {
+    return read_run_store(dir, store).runs;
 }
 
 }  // namespace rotbench

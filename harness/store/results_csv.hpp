@@ -4,10 +4,12 @@
 
 #include "harness/core/run.hpp"
 #include "harness/store/output_dir.hpp"
+#include "harness/store/run_record.hpp"
 #include "harness/store/scheme_record.hpp"
 
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -23,19 +25,26 @@ std::string results_csv(const std::vector<RunResult>& results);
 std::string runs_csv(const std::vector<RunResult>& results);
 
 // runs.jsonl, the run store of an output folder: one record per run as it was made (an
-// ensemble's members each; harness/store/run_record.hpp), indexed from 0.
-std::string run_store(const std::vector<RunResult>& runs);
+// ensemble's members each; harness/store/run_record.hpp), indexed from 0; a slice's runs each
+// with its place in the whole plan (`places`, one per run, or none).
+std::string run_store(const std::vector<RunResult>& runs, const std::vector<PlanPlace>& places = {});
 // Writes runs.jsonl of `runs` and schemes.json (their schemes as registered in this process,
 // else as `recorded`, harness/store/scheme_record.hpp), and results.csv and runs.csv of
 // `tables`: the same runs with each ensemble's members collapsed (harness/analysis/ensemble.hpp),
 // whose rows follow the order of the tables.
 void write_run_files(const OutputDir& dir, const std::vector<RunResult>& runs, const std::vector<RunResult>& tables,
-                     const SchemeInfos& recorded = {});
+                     const SchemeInfos& recorded = {}, const std::vector<PlanPlace>& places = {});
 
-// Reads a folder's runs back from its store, as they were made (an ensemble's members each). InputError when the store is
-// missing, cut, or not rotbench's (an id that is not one, a step out of range); `name` stands
-// for the file in messages.
-std::vector<RunResult> read_results(const std::filesystem::path& dir);
+// Reads a folder's runs back from its store (`store`: runs.jsonl, or the stability study's), as they
+// were made (an ensemble's members each). InputError when the store is missing, cut, or not
+// rotbench's (an id that is not one, a step out of range); `name` stands for the file in messages.
+std::vector<RunResult> read_results(const std::filesystem::path& dir, const std::string& store = "runs.jsonl");
 std::vector<RunResult> parse_run_store(const std::string& text, const std::string& name);
+// The same, with each run's place in the plan (none outside a slice).
+struct StoredRuns {
+    std::vector<RunResult> runs;
+    std::vector<std::optional<PlanPlace>> places;
+};
+StoredRuns read_run_store(const std::filesystem::path& dir, const std::string& store = "runs.jsonl");
 
 }  // namespace rotbench

@@ -89,13 +89,29 @@ RunResult run_of(const json& j) {
     return r;
 }
 
+json place_json(const PlanPlace& p) {
+    return {{"id", p.plan_id}, {"shard", p.shard}, {"shards", p.shards}, {"size", p.plan_size}, {"index", p.plan_index}};
+}
+
+PlanPlace place_of(const json& j) {
+    const auto count = [&](const char* key) {
+        const json& v = j.at(key);
+        if (!v.is_number_unsigned()) throw InputError(fmt::format("plan {} {} is not a count", key, v.dump()));
+        return v.get<std::uint64_t>();
+    };
+    return {j.at("id").get<std::string>(), count("shard"), count("shards"), count("size"), count("index")};
+}
+
 // The record's shape: whatever else a line holds, it is not a record of this store.
 bool is_record(const json& j) { return j.is_object() && j.contains("index") && j.at("index").is_number_unsigned() && j.contains("run"); }
 
 }  // namespace
 
-std::string run_record(std::size_t index, const RunResult& result) {
-    return json{{"index", index}, {"run", run_json(result)}}.dump(-1, ' ', false, json::error_handler_t::replace) + "\n";
+std::string run_record(std::size_t index, const RunResult& result, const std::optional<PlanPlace>& place) {
+    json record = {{"index", index}};
+    if (place) record["plan"] = place_json(*place);
+    record["run"] = run_json(result);
+    return record.dump(-1, ' ', false, json::error_handler_t::replace) + "\n";
 }
 
 RunRecords parse_run_records(std::istream& in, const std::string& name) {
@@ -107,6 +123,7 @@ RunRecords parse_run_records(std::istream& in, const std::string& name) {
         if (j.is_discarded() || !is_record(j)) break;
         try {
             found.runs.emplace_back(j.at("index").get<std::size_t>(), run_of(j.at("run")));
+            found.places.push_back(j.contains("plan") ? std::optional(place_of(j.at("plan"))) : std::nullopt);
         } catch (const json::exception& e) {
             throw InputError(fmt::format("{}: the record of run {} is malformed: {}", name, j.at("index").get<std::size_t>(), e.what()));
         } catch (const InputError& e) {

@@ -1,28 +1,39 @@
 // The run store's record: one finished run, whole and lossless, as one line of JSON (JSON
 // Lines). It is the form in which the journal keeps runs and an isolated worker hands its run
 // back; every CSV of a run is an export of these records, never read back inside the run.
-//   {"index": I, "run": {"spec": {...}, "metrics": [[name, value], ...], "failure": "...",
+//   {"index": I, "plan": {...}, "run": {"spec": {...}, "metrics": [[name, value], ...], "failure": "...",
 //    "series_columns": [...], "series": [[...], ...], "snapshots": [...], "walls": [...],
 //    "timing_samples": [...]}}
 // A number that is not finite is written as the string "nan", "inf" or "-inf" (JSON has none);
-// every other one in the shortest form that reads back to the same double. docs/outputs.md.
+// every other one in the shortest form that reads back to the same double. "plan" is there only
+// in a slice of a sharded command (PlanPlace). docs/outputs.md.
 #pragma once
 
 #include "harness/core/run.hpp"
 
 #include <cstddef>
+#include <cstdint>
 #include <istream>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
 namespace rotbench {
 
+// Where a run of `rotbench run --shard K/N` stands in the whole plan, so that `merge` puts the
+// slices back in plan order. Counts as read: merge checks them before it trusts them.
+struct PlanPlace {
+    std::string plan_id;  // the whole plan's fingerprint (harness/store/shard.hpp)
+    std::uint64_t shard = 0, shards = 0, plan_size = 0, plan_index = 0;
+};
+
 // The record of run `index`, ending with its line break.
-std::string run_record(std::size_t index, const RunResult& result);
+std::string run_record(std::size_t index, const RunResult& result, const std::optional<PlanPlace>& place = {});
 
 struct RunRecords {
     std::vector<std::pair<std::size_t, RunResult>> runs;  // in the order found
+    std::vector<std::optional<PlanPlace>> places;         // each run's, when its record has one
     std::size_t whole_length = 0;                         // the bytes the whole records span
 };
 

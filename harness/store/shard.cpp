@@ -1,12 +1,11 @@
 #include "harness/core/fnv1a.hpp"
 #include "harness/store/shard.hpp"
 
-#include "harness/store/csv.hpp"
 #include "harness/store/output_files.hpp"
 #include "harness/store/parse.hpp"
 #include "harness/store/results_csv.hpp"
-#include "schemes/registry.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cstdint>
 #include <fmt/format.h>
@@ -35,8 +34,6 @@ std::vector<std::size_t> shard_indices(std::size_t plan_size, const Shard& shard
     return out;
 }
 
-std::string run_id(const RunSpec& spec) { return plan_id({spec}); }
-
 std::string plan_id(const std::vector<RunSpec>& plan) {
     Fnv1a h;
     for (const auto& r : plan) {
@@ -51,89 +48,65 @@ std::string plan_id(const std::vector<RunSpec>& plan) {
     return h.hex();
 }
 
-std::string shard_csv(const std::string& plan_id, int shard, int shards, const std::vector<RunResult>& results,
-                      const std::vector<std::size_t>& plan_indices, std::size_t plan_size) {
-    std::string csv = std::string(shard_header) + "\n";
-    for (std::size_t i = 0; i < results.size(); ++i)
-        csv += fmt::format("{},{},{},{},{},{},{},{},{}\n", plan_id, shard, shards, plan_size, plan_indices[i], results[i].spec.scene,
-                           results[i].spec.scheme, format_number(results[i].spec.dt), run_id(results[i].spec));
-    return csv;
-}
+namespace {
 
-std::vector<RunResult> merge_shards(const std::vector<std::filesystem::path>& dirs) {
-    std::string plan;
-    int shards = 0;
-    std::size_t plan_size = 0;
-    std::vector<int> seen;
-    std::map<std::size_t, RunResult> merged;  // by plan index; never sized by a number read from a file
-    for (const auto& dir : dirs) {
-        const std::string name = (dir / "shard.csv").string();
-        if (!std::filesystem::exists(std::filesystem::symlink_status(dir / "shard.csv")))
-            throw InputError(dir.string() + " is a whole run, not a slice of `rotbench run --shard K/N`: merge joins either the "
-                             "slices of one sharded command or whole runs, not both");
-        const auto rows = read_csv(dir / "shard.csv", shard_header);
-        const auto results = read_results(dir);
-        if (rows.size() != results.size())
-            throw InputError(name + ": lists " + std::to_string(rows.size()) + " runs, runs.jsonl " +
-                             std::to_string(results.size()));
-        for (std::size_t i = 0; i < rows.size(); ++i) {
-            const auto& f = rows[i];
-            const std::string at = name + ":" + std::to_string(i + 2);
-            const auto count = [&](const std::string& field, const char* what) {
-                std::uint64_t v = 0;
-                const auto [ptr, ec] = std::from_chars(field.data(), field.data() + field.size(), v);
-                if (field.empty() || ec != std::errc() || ptr != field.data() + field.size())
-                    throw InputError(at + ": '" + field + "' is not a count (" + what + ")");
-                return v;
-            };
-            const std::uint64_t k = count(f[1], "shard"), n = count(f[2], "shards"), size = count(f[3], "plan_size"),
-                                index = count(f[4], "plan_index");
-            // Checked before use: a slice holds every n-th run of the plan, so at least
-            // floor(plan_size / n) of them.
-            if (n < 1 || n > static_cast<std::uint64_t>(std::numeric_limits<int>::max()) || k < 1 || k > n ||
-                size / n > rows.size())
-                throw InputError(at + ": shard " + f[1] + " of " + f[2] + " in a plan of " + f[3] + " runs cannot hold " +
-                                 std::to_string(rows.size()) + " runs");
-            if (plan.empty()) {
-                plan = f[0], shards = static_cast<int>(n), plan_size = size;
-            }
-            if (f[0] != plan || static_cast<int>(n) != shards || size != plan_size)
-                throw InputError(name + ": a slice of another sweep (plan " + f[0] + ", " +
-                                 std::to_string(n) + " shards) than the first directory's (plan " + plan + ", " +
-                                 std::to_string(shards) + " shards)");
-            if (i == 0) {
-                if (std::find(seen.begin(), seen.end(), static_cast<int>(k)) != seen.end())
-                    throw InputError(dir.string() + ": shard " + std::to_string(k) + " is given twice");
-                seen.push_back(static_cast<int>(k));
-            }
-            const RunResult& r = results[i];
-            if (index >= plan_size || merged.count(index) || r.spec.scene != f[5] || r.spec.scheme != f[6] || run_id(r.spec) != f[8])
-                throw InputError(name + ": row " + std::to_string(i + 2) + " does not match runs.jsonl (its run, step, duration or parameters)");
-            merged[index] = r;
+namespace fs = std::filesystem;
+using Stores = std::vector<std::pair<fs::path, StoredRuns>>;
+
+std::vector<RunResult> merge_slices(Stores& stores) {
+    const PlanPlace first = *stores.front().second.places.front();
+    std::vector<std::uint64_t> seen;
+    std::map<std::uint64_t, RunResult> merged;  // by plan index; never sized by a number read from a file
+    for (auto& [dir, store] : stores) {
+        const std::string name = (dir / "runs.jsonl").string();
+        const std::uint64_t k = store.places.front() ? store.places.front()->shard : 0;
+        if (std::find(seen.begin(), seen.end(), k) != seen.end()) throw InputError(fmt::format("{}: shard {} is given twice", dir.string(), k));
+        seen.push_back(k);
+        for (std::size_t i = 0; i < store.runs.size(); ++i) {
+            const std::string at = fmt::format("{}: run {}", name, i);
+            if (!store.places[i])
+                throw InputError(dir.string() + " is a whole run, not a slice of `rotbench run --shard K/N`: merge joins either the "
+                                 "slices of one sharded command or whole runs, not both");
+            const PlanPlace& p = *store.places[i];
+            // Checked before use: a slice holds every n-th run of the plan, so at least floor(plan_size / n) of them.
+            if (p.shards < 1 || p.shards > static_cast<std::uint64_t>(std::numeric_limits<int>::max()) || p.shard < 1 ||
+                p.shard > p.shards || p.plan_size / p.shards > store.runs.size())
+                throw InputError(fmt::format("{}: shard {} of {} in a plan of {} runs cannot hold {} runs", at, p.shard, p.shards,
+                                             p.plan_size, store.runs.size()));
+            if (p.plan_id != first.plan_id || p.shards != first.shards || p.plan_size != first.plan_size)
+                throw InputError(fmt::format("{}: a slice of another sweep (plan {}, {} shards) than the first directory's (plan {}, {} shards)",
+                                             name, p.plan_id, p.shards, first.plan_id, first.shards));
+            if (p.shard != k || p.plan_index >= p.plan_size || p.plan_index % p.shards != k - 1 ||
+                !merged.emplace(p.plan_index, std::move(store.runs[i])).second)
+                throw InputError(fmt::format("{}: plan index {} is not a place of shard {} of {}", at, p.plan_index, k, p.shards));
         }
     }
-    if (static_cast<int>(seen.size()) != shards) {
+    if (seen.size() != first.shards) {
         std::string missing;
         int listed = 0;
-        for (int k = 1; k <= shards && listed <= 10; ++k)
+        for (std::uint64_t k = 1; k <= first.shards && listed <= 10; ++k)
             if (std::find(seen.begin(), seen.end(), k) == seen.end())
                 missing += (missing.empty() ? "" : ", ") + (++listed > 10 ? std::string("...") : std::to_string(k));
-        throw InputError("merge: shard(s) " + missing + " of " + std::to_string(shards) + " missing");
+        throw InputError(fmt::format("merge: shard(s) {} of {} missing", missing, first.shards));
     }
-    if (merged.size() != plan_size) throw InputError("merge: the shards do not cover the whole plan");
+    if (merged.size() != first.plan_size) throw InputError("merge: the shards do not cover the whole plan");
     std::vector<RunResult> out;
-    for (auto& [index, r] : merged) out.push_back(std::move(r));
+    std::vector<RunSpec> plan;
+    for (auto& [index, r] : merged) plan.push_back(r.spec), out.push_back(std::move(r));
+    if (plan_id(plan) != first.plan_id)
+        throw InputError("merge: the slices' runs do not make the plan they name (plan " + first.plan_id +
+                         "): a run store edited to hold another step, duration or parameters");
     return out;
 }
 
-std::vector<RunResult> join_runs(const std::vector<std::filesystem::path>& dirs) {
+std::vector<RunResult> join_runs(Stores& stores) {
     std::vector<RunResult> out;
-    std::map<RunSpec, std::filesystem::path> from;
-    for (const auto& dir : dirs) {
-        if (std::filesystem::exists(std::filesystem::symlink_status(dir / "shard.csv")))
+    std::map<RunSpec, fs::path> from;
+    for (auto& [dir, store] : stores) {
+        if (std::any_of(store.places.begin(), store.places.end(), [](const auto& place) { return place.has_value(); }))
             throw InputError(dir.string() + " is a slice of `rotbench run --shard K/N`: merge joins either the slices of one "
                              "sharded command or whole runs, not both");
-        for (auto& r : read_results(dir)) {
+        for (auto& r : store.runs) {
             if (const auto [it, fresh] = from.try_emplace(computed_key(r.spec), dir); !fresh)
                 throw InputError(fmt::format("merge: the {} run of {} on {} at dt = {}, with the same parameters, is in both {} and "
                                              "{}: a run is joined once (an ensemble grown in parts takes other seeds: --set SCENE.seed=N)",
@@ -143,6 +116,14 @@ std::vector<RunResult> join_runs(const std::vector<std::filesystem::path>& dirs)
         }
     }
     return out;
+}
+
+}  // namespace
+
+std::vector<RunResult> merge_runs(const std::vector<std::filesystem::path>& dirs) {
+    Stores stores;
+    for (const auto& dir : dirs) stores.emplace_back(dir, read_run_store(dir));
+    return stores.front().second.places.front() ? merge_slices(stores) : join_runs(stores);
 }
 
 }  // namespace rotbench
