@@ -98,10 +98,9 @@ std::string granular_section(const ResultSet& set, const OutputDir& dir) {
                   "its program's whole CPU time over the simulated time, start-up included (\"client\"):\n\n"
                   "| scheme | CPU s per simulated s | rotation's share of a step | seed 000 (Table 4) |\n|---|--:|--:|---|\n";
             for (const RunResult* r : group) {
-                const double client = r->value(metric::client_cpu_seconds) / r->spec.t_end;
-                const std::string cost = r->has(metric::cpu_seconds_per_simulated_second) || !std::isfinite(client)
-                                             ? number(r->value(metric::cpu_seconds_per_simulated_second))
-                                             : number(client) + " (client)";
+                const std::string cost = r->has(metric::client_cpu_seconds_per_simulated_second)
+                                             ? number(r->value(metric::client_cpu_seconds_per_simulated_second)) + " (client)"
+                                             : number(r->value(metric::cpu_seconds_per_simulated_second));
                 md += fmt::format("| {} | {} | {} | {} |\n", r->spec.scheme, cost,
                                   std::isfinite(r->value(metric::rotation_share)) ? fmt::format("{:.1f} %", 100.0 * r->value(metric::rotation_share)) : "—",
                                   published_for(scene.scene, metric::cpu_seconds_per_simulated_second, r->spec.scheme));

@@ -1,14 +1,15 @@
 // The report's table of the granular step beside LIGGGHTS's: CPU seconds per sphere-step of each
-// code on one silo, filling and discharge apart, read from DIR/granular_speed.csv, which
-// benchmarks/granular_speed.py writes.
+// code on one silo, filling and discharge apart (harness/analysis/cost_tables.hpp).
 #pragma once
 
-#include <filesystem>
+#include "harness/analysis/cost_tables.hpp"
+
 #include <string>
+#include <vector>
 
 namespace rotbench {
 
-// Markdown; empty when DIR holds no granular_speed.csv (the measurement is optional).
-std::string granular_speed_section(const std::filesystem::path& dir);
+// Markdown; empty without rows (the measurement is optional).
+std::string granular_speed_section(const std::vector<GranularSpeedRow>& rows);
 
 }  // namespace rotbench

@@ -288,8 +288,8 @@ std::string markdown_report(const Analysis& a, const std::string& command_line, 
     md += clients_section(a.counterparts);
     md += answer_section(set, a.answers, a.tolerances);
     md += stability_summary(a.stability, set, dir);
-    md += cost_section(dir.path());
-    md += granular_speed_section(dir.path());
+    md += cost_section(a.cost, dir.path());
+    md += granular_speed_section(a.granular_speed);
 
     // The overview panel of each scene's plots: per family, the scheme that reaches the
     // strictest tolerance at the least CPU time there (or, without a reference, the smallest

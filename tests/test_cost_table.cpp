@@ -1,5 +1,5 @@
 // The report's cost sections, from a cost.csv as benchmarks/cost.py writes it and a granular_speed.csv as
-// benchmarks/granular_speed.py does.
+// benchmarks/granular_speed.py does, read by the analysis and formatted by the report.
 #include "reports/cost_table.hpp"
 #include "reports/granular_speed.hpp"
 #include "harness/store/output_files.hpp"
@@ -39,7 +39,7 @@ const char* cost_csv =
 TEST_CASE("the cost section shows for every scheme its times and instructions and limits and ratios and the repeatability") {
     const auto dir = fresh_dir("rotbench_cost_table");
     write_file_atomically(dir / "cost.csv", cost_csv);
-    const std::string md = cost_section(dir);
+    const std::string md = cost_section(read_cost_table(dir), dir);
     CHECK(md.find("| direct | 20.0 | 2.0 % | 80.0 | 3.0 % | 4.00x | 1.00 |") != std::string::npos);
     CHECK(md.find("| zvw | 40.0 | 5.0 % | 120.0 | 1.0 % | 3.00x | 2.00 |") != std::string::npos);
     CHECK(md.find("| exact_splitting (1e+05 bodies) | 2000.0 | 1.0 % | 2000.0 | 1.0 % | 1.00x | 100.00 |") != std::string::npos);
@@ -67,7 +67,8 @@ TEST_CASE("the cost section shows for every scheme its times and instructions an
 
 TEST_CASE("without cost.csv the report says how to measure it") {
     const auto dir = fresh_dir("rotbench_cost_absent");
-    CHECK(cost_section(dir).find("`benchmarks/cost.py BUILD ") != std::string::npos);
+    CHECK_FALSE(read_cost_table(dir).has_value());
+    CHECK(cost_section(std::nullopt, dir).find("`benchmarks/cost.py BUILD " + dir.string()) != std::string::npos);
     std::filesystem::remove_all(dir);
 }
 
@@ -76,26 +77,27 @@ TEST_CASE("a hand-edited cost.csv with a field that is not a number is bad input
     std::string edited = cost_csv;
     edited.replace(edited.find("zvw,1000000,40,"), 15, "zvw,1000000,4O,");
     write_file_atomically(dir / "cost.csv", edited);
-    CHECK_THROWS_MATCHES(cost_section(dir), InputError, Catch::Message((dir / "cost.csv").string() + ":6: column ns_batched: '4O' is not a number"));
+    CHECK_THROWS_MATCHES(read_cost_table(dir), InputError, Catch::Message((dir / "cost.csv").string() + ":6: column ns_batched: '4O' is not a number"));
     std::filesystem::remove_all(dir);
 }
 
 TEST_CASE("the granular step beside LIGGGHTS: per phase, each code's CPU per sphere-step and their ratio, and no section without its table") {
     const auto dir = fresh_dir("rotbench_granular_speed");
-    CHECK(granular_speed_section(dir).empty());
+    CHECK(read_granular_speed(dir).empty());
+    CHECK(granular_speed_section({}).empty());
     write_file_atomically(dir / "granular_speed.csv",
                           "code,phase,t_end,steps,spheres,cpu_s,cpu_per_sphere_step\n"
                           "rotbench,fill,7.5,100000,11300,113,1e-07\n"
                           "rotbench,discharge,7.5,275000,11300,248.6,8e-08\n"
                           "liggghts,fill,7.5,100000,11000,220,2e-07\n"
                           "liggghts,discharge,7.5,275000,11000,1210,4e-07\n");
-    const std::string md = granular_speed_section(dir);
+    const std::string md = granular_speed_section(read_granular_speed(dir));
     CHECK_THAT(md, Catch::Contains("`silo_discharge`, 7.5 s"));
     CHECK_THAT(md, Catch::Contains("| fill | 1e-07 | 2e-07 | 0.50 | 100000 | 11300, 11000 |"));
     CHECK_THAT(md, Catch::Contains("| discharge | 8e-08 | 4e-07 | 0.20 | 275000 | 11300, 11000 |"));
     // A hand-edited table is input: a field that is not a number is refused with its line.
     write_file_atomically(dir / "granular_speed.csv",
                           "code,phase,t_end,steps,spheres,cpu_s,cpu_per_sphere_step\nrotbench,fill,7.5,x,1,1,1\n");
-    CHECK_THROWS_WITH(granular_speed_section(dir), Catch::Contains("granular_speed.csv:2: column steps"));
+    CHECK_THROWS_WITH(read_granular_speed(dir), Catch::Contains("granular_speed.csv:2: column steps"));
     std::filesystem::remove_all(dir);
 }

@@ -157,6 +157,8 @@ TEST_CASE("granular client: stones handed back at the sample times give the prob
     }
     CHECK(std::isfinite(r.value("mass_left_end")));
     CHECK(!r.series.empty());  // the mass curve
+    // The report's cost figure for a client: its program's CPU time per simulated second.
+    CHECK(r.value(metric::client_cpu_seconds_per_simulated_second) == r.value(metric::client_cpu_seconds) / r.spec.t_end);
     // The last picture: every sphere where the stone's shape, place and orientation put it.
     REQUIRE(r.snapshots.size() >= run.last_spheres.size());
     const std::size_t last = r.snapshots.size() - run.last_spheres.size();

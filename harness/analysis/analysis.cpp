@@ -10,6 +10,8 @@ Analysis analyse(ResultSet set, AnalysisOptions options) {
     a.set = std::move(set);
     a.tolerances = std::move(options.tolerances);
     a.stability = std::move(options.stability);
+    a.cost = std::move(options.cost);
+    a.granular_speed = std::move(options.granular_speed);
     for (const auto& [id, info] : a.set.schemes) add_expected_orders(id, info.claims, a.expected);
     a.orders = observed_orders(a.set.runs);
     a.answers = largest_dts(a.set, a.orders, a.tolerances, a.stability);

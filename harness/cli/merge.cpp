@@ -23,7 +23,7 @@ public:
         const OutputDir out = OutputDir::open(out_, {"run", "results.csv", run_files, overwrite_});
         SchemeInfos recorded;  // what each slice ran: merge needs no --plugin to describe a plug-in's runs
         for (const auto& dir : dirs) recorded.merge(read_schemes(dir));
-        write_outputs(out, results, how.command_line, analysis_options(tolerances_, out.path()), how.out, recorded);
+        write_outputs(out, results, how.command_line, analysis_options(tolerances_, out.path(), out.path()), how.out, recorded);
         return 0;
     }
 

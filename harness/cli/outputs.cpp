@@ -37,9 +37,11 @@ std::vector<double> parse_tolerances(const std::vector<std::string>& texts) {
     return out;
 }
 
-AnalysisOptions analysis_options(const std::vector<std::string>& tolerances, const fs::path& stability_dir) {
+AnalysisOptions analysis_options(const std::vector<std::string>& tolerances, const fs::path& run_dir, const fs::path& stability_dir) {
     AnalysisOptions options;
     options.tolerances = parse_tolerances(tolerances);
+    options.cost = read_cost_table(run_dir);
+    options.granular_speed = read_granular_speed(run_dir);
     if (fs::exists(stability_dir / stability_store))
         options.stability = stability_study(read_results(stability_dir, stability_store), (stability_dir / stability_store).string()).rows;
     return options;

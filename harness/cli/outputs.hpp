@@ -30,9 +30,11 @@ void add_tolerance_option(CLI::App& command, std::vector<std::string>& texts);
 // Each in (0, 1) (InputError otherwise); the defaults when none is given.
 std::vector<double> parse_tolerances(const std::vector<std::string>& texts);
 
-// The analysis's options: the tolerances, and the stability study in `stability_dir` when it
+// The analysis's options: the tolerances, the cost tables in `run_dir` (benchmarks/cost.py and
+// granular_speed.py write them beside a run) and the stability study in `stability_dir` when it
 // holds its store.
-AnalysisOptions analysis_options(const std::vector<std::string>& tolerances, const std::filesystem::path& stability_dir);
+AnalysisOptions analysis_options(const std::vector<std::string>& tolerances, const std::filesystem::path& run_dir,
+                                 const std::filesystem::path& stability_dir);
 
 // The run files (harness/store/output_files.hpp), the analysis's (export_analysis) and report.md;
 // the schemes not registered in this process described as `recorded` (earlier commands' schemes.json).

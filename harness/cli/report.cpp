@@ -21,7 +21,7 @@ public:
         add_tolerance_option(command, tolerances_);
     }
     int run(const Invocation& how) override {
-        const AnalysisOptions options = analysis_options(tolerances_, stability_.empty() ? dir_ : stability_);
+        const AnalysisOptions options = analysis_options(tolerances_, dir_, stability_.empty() ? dir_ : stability_);
         if (!stability_.empty() && options.stability.empty())
             throw InputError("--stability " + stability_ + ": no " + stability_store + " there (rotbench stability --out writes one)");
         const Analysis analysis = analyse(describe(collapse_ensembles(read_results(dir_)), read_schemes(dir_)), options);

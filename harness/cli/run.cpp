@@ -98,7 +98,7 @@ int run_sweep_command(const RunOptionsText& o, const Invocation& how) {
     const OutputDir dir = OutputDir::open(how.resuming ? *how.resuming : fs::path(o.out),
                                           {"run", "results.csv", slice.shard ? slice_files : run_files, o.overwrite,
                                            how.resuming.has_value()});
-    const AnalysisOptions analysis = analysis_options(o.tolerances, dir.path());  // a stability study already in --out
+    const AnalysisOptions analysis = analysis_options(o.tolerances, dir.path(), dir.path());  // a stability study already in --out
     ExecOptions options{.jobs = o.jobs, .quiet = o.quiet};
     options.run.series_samples = o.energy_series;
     o.isolation.apply(options.run);

@@ -54,6 +54,8 @@ const std::vector<MetricInfo>& metric_table() {
         {.name = metric::client_cpu_seconds, .unit = "s", .kind = K::timing,
          .meaning = "a client's run: the CPU time of its program and the children it waited for, start-up included"},
         {.name = metric::client_wall_seconds, .unit = "s", .kind = K::timing, .meaning = "a client's run: its program's wall time"},
+        {.name = metric::client_cpu_seconds_per_simulated_second, .unit = "s/s", .kind = K::timing,
+         .meaning = "a granular client's run: client_cpu_seconds over the simulated time"},
         {.name = metric::declined, .unit = "0/1", .kind = K::flag, .integer = true,
          .meaning = "1 when a client's program declined the run (exit status 3): a scene or parameters it cannot represent; "
                     "skipped, not failed"},

@@ -183,6 +183,7 @@ RunResult run_client(const RunSpec& requested, const RunOptions& options, const 
         RunResult result = replay_granular_samples(requested, *granular, scratch.path / output, steps);
         if (!result.failure.empty()) result.failure += out.last_error_line;
         result.spec.t_end = t_end;
+        result.metrics.emplace_back(metric::client_cpu_seconds_per_simulated_second, out.cpu_seconds / t_end);
         return timed(std::move(result));
     }
     std::vector<Row> rows;
