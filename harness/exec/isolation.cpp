@@ -94,36 +94,49 @@ WorkerOutput run_worker(const std::vector<std::string>& verb_arguments, double s
     return run_program(args, "", seconds, megabytes, "worker");
 }
 
-WorkerOutput run_program(std::vector<std::string> args, const std::string& directory, double seconds, std::size_t megabytes,
-                         const std::string& what) {
-    WorkerOutput result;
-    const auto fail = [&](const std::string& why) {
-        result.failure = why;
-        return result;
-    };
-    // Everything the child needs is built before fork: after it, only chdir and exec.
-    if (args.empty() || args.front().empty()) return fail("no program to start");
-    if (args.front().find('/') == std::string::npos) {  // looked up on PATH here, as execvp would
+namespace {
+
+// A started program: its pid, which leads its own process group, and the read ends of its
+// standard output and error.
+struct Child {
+    pid_t pid = -1;
+    int out = -1, err = -1;
+};
+
+// args.front() as execv needs it: looked up on PATH here, as execvp would, or a relative path made
+// absolute (it is the caller's, not the folder the child starts in). Why not, or "".
+std::string resolve_program(std::vector<std::string>& args, const std::string& what) {
+    if (args.empty() || args.front().empty()) return "no program to start";
+    if (args.front().find('/') == std::string::npos) {
         const std::string found = find_on_path(args.front());
-        if (found.empty()) return fail("its " + what + " '" + args.front() + "' is not found on PATH");
+        if (found.empty()) return "its " + what + " '" + args.front() + "' is not found on PATH";
         args.front() = found;
-    } else {  // a relative path is the caller's, not the folder the child starts in
+    } else {
         args.front() = std::filesystem::absolute(args.front()).string();
     }
+    return "";
+}
+
+// Forks and execs args in `directory` (none: here) with its address space limited to
+// `megabytes`, in a process group of its own that a signal to rotbench kills (list_child_group).
+// Why it could not start, or "" with `child` set.
+std::string start_child(std::vector<std::string>& args, const std::string& directory, std::size_t megabytes, const std::string& what,
+                        Child& child) {
+    // Everything the child needs is built before fork: after it, only chdir and exec.
     std::vector<char*> argv;
     for (auto& a : args) argv.push_back(a.data());
     argv.push_back(nullptr);
     // started: closed by a successful exec (close-on-exec), or given the errno of the chdir or the
     // exec that failed, so that the reason is said rather than an exit status.
     int out[2], err[2], started[2];
-    if (::pipe2(out, O_CLOEXEC) != 0) return fail("could not start its " + what + ": " + std::strerror(errno));
+    if (::pipe2(out, O_CLOEXEC) != 0) return "could not start its " + what + ": " + std::strerror(errno);
     if (::pipe2(err, O_CLOEXEC) != 0) {
         ::close(out[0]), ::close(out[1]);
-        return fail("could not start its " + what + ": " + std::strerror(errno));
+        return "could not start its " + what + ": " + std::strerror(errno);
     }
     if (::pipe2(started, O_CLOEXEC) != 0) {
         ::close(out[0]), ::close(out[1]), ::close(err[0]), ::close(err[1]);
-        return fail("could not start its " + what + ": " + std::strerror(errno));
+        return "could not start its " + what + ": " + std::strerror(errno);
     }
     const rlim_t address_space = static_cast<rlim_t>(megabytes) << 20;
     const bool limit_memory = memory_limit_enforced();
@@ -166,7 +179,7 @@ WorkerOutput run_program(std::vector<std::string> args, const std::string& direc
     ::close(started[1]);
     if (pid < 0) {
         ::close(out[0]), ::close(err[0]), ::close(started[0]);
-        return fail("could not start its " + what + ": " + std::strerror(errno));
+        return "could not start its " + what + ": " + std::strerror(errno);
     }
     int failed[2] = {0, 0};
     ssize_t got;
@@ -179,30 +192,37 @@ WorkerOutput run_program(std::vector<std::string> args, const std::string& direc
         ::close(out[0]), ::close(err[0]);
         while (::waitpid(pid, nullptr, 0) < 0 && errno == EINTR) {
         }
-        return fail(failed[0] == 0 ? fmt::format("could not enter the folder {} for its {}: {}", directory, what, std::strerror(failed[1]))
-                                   : fmt::format("could not start its {} '{}': {}", what, args.front(), std::strerror(failed[1])));
+        return failed[0] == 0 ? fmt::format("could not enter the folder {} for its {}: {}", directory, what, std::strerror(failed[1]))
+                              : fmt::format("could not start its {} '{}': {}", what, args.front(), std::strerror(failed[1]));
     }
-    std::string& text = result.text;
-    std::string errors;
-    ::fcntl(out[0], F_SETFL, O_NONBLOCK);
-    ::fcntl(err[0], F_SETFL, O_NONBLOCK);
+    child = {pid, out[0], err[0]};
+    return "";
+}
+
+enum class Watched { ended, timed_out, interrupted, too_much };
+
+// Reads the child's output into `text` (and the last 4 kB of its errors into `errors`) until
+// both pipes end or it has exited (a process it started may hold them), it runs past `seconds`,
+// a signal asks rotbench to stop, or it writes too much. Closes the pipes; kills nothing.
+Watched watch_child(const Child& child, double seconds, std::string& text, std::string& errors) {
+    ::fcntl(child.out, F_SETFL, O_NONBLOCK);
+    ::fcntl(child.err, F_SETFL, O_NONBLOCK);
     const auto start = std::chrono::steady_clock::now();
-    bool timed_out = false, interrupted = false, too_much = false, exited = false;
-    int status = 0;
-    pollfd fds[2] = {{out[0], POLLIN, 0}, {err[0], POLLIN, 0}};
-    // Until both pipes end, or the worker has exited (a process it started may hold them).
+    Watched how = Watched::ended;
+    bool exited = false;
+    pollfd fds[2] = {{child.out, POLLIN, 0}, {child.err, POLLIN, 0}};
     for (int open_fds = 2; open_fds > 0 && !exited;) {
         if (interrupt_signal()) {
-            interrupted = true;
+            how = Watched::interrupted;
             break;
         }
         if (std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > seconds) {
-            timed_out = true;
+            how = Watched::timed_out;
             break;
         }
         const int ready = ::poll(fds, 2, 100);  // a tenth of a second: signals and limits are looked at that often
         siginfo_t info{};  // WNOWAIT: seen to have exited, not reaped, so its pid stays its own
-        exited = ::waitid(P_PID, static_cast<id_t>(pid), &info, WEXITED | WNOHANG | WNOWAIT) == 0 && info.si_pid == pid;
+        exited = ::waitid(P_PID, static_cast<id_t>(child.pid), &info, WEXITED | WNOHANG | WNOWAIT) == 0 && info.si_pid == child.pid;
         for (int k = 0; k < 2; ++k) {
             if (fds[k].fd < 0 || (!exited && !(ready > 0 && (fds[k].revents & (POLLIN | POLLHUP | POLLERR))))) continue;
             if (!drain(fds[k].fd, k == 0 ? text : errors, k == 0 ? 0 : 4096)) {
@@ -212,18 +232,37 @@ WorkerOutput run_program(std::vector<std::string> args, const std::string& direc
             }
         }
         if (text.size() > max_worker_output) {
-            too_much = true;
+            how = Watched::too_much;
             break;
         }
     }
-    // The worker's whole process group: it, and anything it started, whether it has exited or
-    // not. Its pid is not free for reuse until it is reaped below, so no other group is hit.
-    ::kill(-pid, SIGKILL);
-    release_child_group(pid);  // killed: a signal now need not
     for (auto& f : fds)
         if (f.fd >= 0) ::close(f.fd);
+    return how;
+}
+
+}  // namespace
+
+WorkerOutput run_program(std::vector<std::string> args, const std::string& directory, double seconds, std::size_t megabytes,
+                         const std::string& what) {
+    WorkerOutput result;
+    const auto fail = [&](const std::string& why) {
+        result.failure = why;
+        return result;
+    };
+    Child child;
+    if (std::string why = resolve_program(args, what); !why.empty()) return fail(why);
+    if (std::string why = start_child(args, directory, megabytes, what, child); !why.empty()) return fail(why);
+    const auto start = std::chrono::steady_clock::now();
+    std::string errors;
+    const Watched watched = watch_child(child, seconds, result.text, errors);
+    // The child's whole process group: it, and anything it started, whether it has exited or
+    // not. Its pid is not free for reuse until it is reaped below, so no other group is hit.
+    ::kill(-child.pid, SIGKILL);
+    release_child_group(child.pid);  // killed: a signal now need not
+    int status = 0;
     rusage usage{};
-    while (::wait4(pid, &status, 0, &usage) < 0 && errno == EINTR) {
+    while (::wait4(child.pid, &status, 0, &usage) < 0 && errno == EINTR) {
     }
     result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     result.cpu_seconds = static_cast<double>(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
@@ -234,12 +273,14 @@ WorkerOutput run_program(std::vector<std::string> args, const std::string& direc
         const std::size_t begin = line_break == std::string::npos ? 0 : line_break + 1;
         result.last_error_line = ": " + errors.substr(begin, end - begin + 1);
     }
-    if (interrupted) {
-        result.interrupted = true;
-        return result;
+    switch (watched) {
+        case Watched::interrupted: result.interrupted = true; return result;
+        case Watched::timed_out:
+            return fail(fmt::format("exceeded the run time limit of {:g} s (--run-timeout); its {} was killed", seconds, what));
+        case Watched::too_much:
+            return fail(fmt::format("its {} wrote more than {} MB on its standard output; it was killed", what, max_worker_output >> 20));
+        case Watched::ended: break;
     }
-    if (timed_out) return fail(fmt::format("exceeded the run time limit of {:g} s (--run-timeout); its {} was killed", seconds, what));
-    if (too_much) return fail(fmt::format("its {} wrote more than {} MB on its standard output; it was killed", what, max_worker_output >> 20));
     if (WIFSIGNALED(status))
         return fail(fmt::format("crashed: signal {} ({}) in its {} process", WTERMSIG(status), ::strsignal(WTERMSIG(status)), what));
     if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
