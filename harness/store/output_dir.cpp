@@ -84,25 +84,24 @@ OutputDir::State::~State() {
     if (lock_fd >= 0) ::close(lock_fd);  // releases the flock
 }
 
-OutputDir OutputDir::open(const fs::path& dir, const Request& r) {
+namespace {
+
+using Manifest = std::vector<std::pair<std::string, std::string>>;  // (family, file)
+
+// What stands in the way of the request in an existing `dir`: a link where rotbench writes, a
+// file it did not write, another family's, an interrupted run, a finished one (its marker). Its
+// manifest when nothing does.
+Manifest refuse_what_is_in_the_way(const fs::path& dir, const OutputDir::Request& r) {
     const std::string name = dir.string();
     std::error_code ec;
-    if (fs::exists(dir, ec) && !fs::is_directory(dir, ec)) throw InputError("--out " + name + ": cannot create the directory (a file is there)");
-    const bool existed = fs::exists(dir, ec);
-    if (existed) {
-        refuse_links(dir, fs::path(meta) / "lock");
-        for (const char* sub : subfolders) refuse_links(dir, sub);
-        refuse_links(dir, "partial/command");
-    }
-    const bool fresh = !existed || empty_directory(dir);
+    refuse_links(dir, fs::path(meta) / "lock");
+    for (const char* sub : subfolders) refuse_links(dir, sub);
+    refuse_links(dir, "partial/command");
     const bool ours = fs::exists(manifest_path(dir), ec);
-    if (!fresh && !ours && !r.overwrite)
+    if (!empty_directory(dir) && !ours && !r.overwrite)
         throw InputError("--out " + name + " holds files rotbench did not write; choose another directory, or pass --overwrite to "
                          "write beside them (none of them is replaced)");
-    auto manifest = ours ? read_manifest(dir) : std::vector<std::pair<std::string, std::string>>{};
-    const auto listed = [&](const std::string& file) {
-        return std::find_if(manifest.begin(), manifest.end(), [&](const auto& e) { return e.second == file; });
-    };
+    Manifest manifest = ours ? read_manifest(dir) : Manifest{};
     if (!r.resuming && fs::exists(dir / "partial" / "command", ec) && !r.overwrite)
         throw InputError("--out " + name + " holds an interrupted run; rotbench run --resume " + name +
                          " finishes it, --overwrite starts again");
@@ -111,70 +110,80 @@ OutputDir OutputDir::open(const fs::path& dir, const Request& r) {
     for (const char* sub : subfolders)
         if (fs::exists(dir / sub, ec) && !fs::is_directory(dir / sub, ec))
             throw InputError("--out " + name + ": " + (dir / sub).string() + " is a file where rotbench writes a directory");
-    for (const auto& file : r.files)
-        if (fs::exists(dir / file, ec)) {
-            const auto entry = listed(file);
-            if (entry == manifest.end())
-                throw InputError("--out " + name + ": " + (dir / file).string() + " exists and was not written by rotbench; it is never replaced");
-            if (entry->first != r.family)
-                throw InputError("--out " + name + ": " + (dir / file).string() + " was written by rotbench " + entry->first +
-                                 "; it is not replaced by " + r.family + " (choose another directory)");
-        }
+    for (const auto& file : r.files) {
+        if (!fs::exists(dir / file, ec)) continue;
+        const auto entry = std::find_if(manifest.begin(), manifest.end(), [&](const auto& e) { return e.second == file; });
+        if (entry == manifest.end())
+            throw InputError("--out " + name + ": " + (dir / file).string() + " exists and was not written by rotbench; it is never replaced");
+        if (entry->first != r.family)
+            throw InputError("--out " + name + ": " + (dir / file).string() + " was written by rotbench " + entry->first +
+                             "; it is not replaced by " + r.family + " (choose another directory)");
+    }
+    return manifest;
+}
 
-    if (!existed) {
-        fs::create_directories(dir, ec);
-        if (ec || !fs::is_directory(dir)) throw InputError("--out " + name + ": cannot create the directory");
-    }
-    const auto undo = [&] {  // a refused command leaves no directory of its own behind
-        std::error_code ignored;
-        if (!existed) fs::remove_all(dir, ignored);
-    };
-    fs::create_directories(dir / meta, ec);
-    if (ec) {
-        undo();
-        throw InputError("--out " + name + ": the directory is not writable");
-    }
-    auto state = std::make_shared<State>();
-    state->dir = dir;
-    state->family = r.family;
-    state->lock_fd = ::open((dir / meta / "lock").c_str(), O_RDWR | O_CREAT | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC, 0644);
+// The folder's lock, held (flock) by this process and holding its pid; InputError when another
+// rotbench holds it or it cannot be taken.
+int take_lock(const fs::path& dir) {
+    const std::string name = dir.string(), lock = (dir / meta / "lock").string();
+    const int fd = ::open(lock.c_str(), O_RDWR | O_CREAT | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC, 0644);
+    if (fd < 0) throw InputError("--out " + name + ": the directory is not writable");
     struct stat lock_stat {};
-    if (state->lock_fd >= 0 && (::fstat(state->lock_fd, &lock_stat) != 0 || !S_ISREG(lock_stat.st_mode))) {
-        undo();
-        throw InputError("--out " + name + ": " + (dir / meta / "lock").string() + " is not a regular file; the folder's bookkeeping was changed by something else");
+    if (::fstat(fd, &lock_stat) != 0 || !S_ISREG(lock_stat.st_mode)) {
+        ::close(fd);
+        throw InputError("--out " + name + ": " + lock + " is not a regular file; the folder's bookkeeping was changed by something else");
     }
-    if (state->lock_fd < 0) {
-        undo();
-        throw InputError("--out " + name + ": the directory is not writable");
-    }
-    if (::flock(state->lock_fd, LOCK_EX | LOCK_NB) != 0) {
-        const auto holder = read_file(dir / meta / "lock").value_or("");
+    if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
+        ::close(fd);
+        const auto holder = read_file(lock).value_or("");
         throw InputError("--out " + name + " is in use by another rotbench" + (holder.empty() ? "" : " (process " + holder + ")") +
                          "; wait for it or choose another directory");
     }
     const std::string pid = std::to_string(::getpid());
-    if (::ftruncate(state->lock_fd, 0) != 0 || ::pwrite(state->lock_fd, pid.data(), pid.size(), 0) < 0) {
-        undo();
+    if (::ftruncate(fd, 0) != 0 || ::pwrite(fd, pid.data(), pid.size(), 0) < 0) {
+        ::close(fd);
         throw InputError("--out " + name + ": the directory is not writable");
     }
-    // --overwrite replaces the family's earlier outputs: only the files its manifest lists.
-    if (r.overwrite && !r.resuming) {
-        std::vector<std::pair<std::string, std::string>> kept;
-        for (const auto& entry : manifest) {
-            if (entry.first == r.family) {
+    return fd;
+}
+
+}  // namespace
+
+OutputDir OutputDir::open(const fs::path& dir, const Request& r) {
+    const std::string name = dir.string();
+    std::error_code ec;
+    if (fs::exists(dir, ec) && !fs::is_directory(dir, ec)) throw InputError("--out " + name + ": cannot create the directory (a file is there)");
+    const bool existed = fs::exists(dir, ec);
+    Manifest manifest = existed ? refuse_what_is_in_the_way(dir, r) : Manifest{};
+    if (!existed) {
+        fs::create_directories(dir, ec);
+        if (ec || !fs::is_directory(dir)) throw InputError("--out " + name + ": cannot create the directory");
+    }
+    auto state = std::make_shared<State>();
+    state->dir = dir;
+    state->family = r.family;
+    try {  // a refused command leaves no directory of its own behind
+        fs::create_directories(dir / meta, ec);
+        if (ec) throw InputError("--out " + name + ": the directory is not writable");
+        state->lock_fd = take_lock(dir);
+        // --overwrite replaces the family's earlier outputs: only the files its manifest lists.
+        if (r.overwrite && !r.resuming) {
+            Manifest kept;
+            for (const auto& entry : manifest) {
+                if (entry.first != r.family) {
+                    kept.push_back(entry);
+                    continue;
+                }
                 refuse_links(dir, fs::path(entry.second).parent_path());
                 fs::remove(dir / entry.second, ec);  // the name itself, were it a link: never what it points to
             }
-            else kept.push_back(entry);
+            manifest = std::move(kept);
         }
-        manifest = std::move(kept);
-    }
-    state->manifest = std::move(manifest);
-    try {
+        state->manifest = std::move(manifest);
         write_manifest(dir, state->manifest);
     } catch (const InputError&) {
-        undo();
-        throw InputError("--out " + name + ": the directory is not writable");
+        if (!existed) fs::remove_all(dir, ec);
+        throw;
     }
     return OutputDir(std::move(state));
 }
