@@ -213,6 +213,27 @@ struct Checkpoint {
     Bodies bodies;
 };
 
+// The timing run: the same steps without the observer, so that the reference solution and the
+// metrics are not charged to the scheme; a long run's sampled stretches from their checkpoints,
+// scaled to the whole run. Warm: the metrics run has just made the same steps (harness/timing.hpp).
+CpuTiming timing_run(const Scene& scene, const SchemeFactory& make, double dt, std::int64_t steps, std::vector<Checkpoint> checkpoints) {
+    const SampledTiming sampling(steps);
+    if (!sampling.sampled()) checkpoints = {{0, scene.initial_state()}};
+    CpuTiming cpu = median_cpu_seconds([&] {
+        for (const Checkpoint& start : checkpoints) {
+            Bodies bodies = start.bodies;
+            auto scheme = make();
+            std::int64_t evals = 0;
+            simulate(
+                scene, *scheme, bodies, dt, sampling.segment_steps(), evals,
+                [](std::int64_t, double, const Bodies&) { return !interrupt_signal(); }, start.step);
+        }
+    });
+    const double scale = static_cast<double>(steps) / static_cast<double>(sampling.timed_steps());
+    for (double& sample : cpu.samples) sample *= scale;
+    return {cpu.median * scale, cpu.min * scale, cpu.max * scale, cpu.repeats, cpu.samples};
+}
+
 }  // namespace
 
 void add_probe_pictures(const SceneProbe& probe, RunResult& r) {
@@ -316,24 +337,8 @@ RunResult run_trajectory(const RunSpec& requested, const RunOptions& options, co
         result.metrics.emplace_back(metric::rotation_share, rotation_seconds / loop_seconds);
         result.metrics.emplace_back(metric::cpu_seconds_per_simulated_second, loop_seconds / result.spec.t_end);
     } else if (!unstable && options.measure_time && requested.timed && !interrupt_signal()) {
-        // Timing run: the same loop without the observer, so the reference solution and
-        // the metrics are not charged to the scheme.
-        const SampledTiming sampling(steps);
-        timed_steps = sampling.timed_steps();
-        if (!sampling.sampled()) checkpoints = {{0, scene->initial_state()}};
-        cpu = median_cpu_seconds([&] {
-            for (const Checkpoint& start : checkpoints) {
-                Bodies bodies = start.bodies;
-                auto scheme = make();
-                std::int64_t evals = 0;
-                simulate(
-                    *scene, *scheme, bodies, dt, sampling.segment_steps(), evals,
-                    [](std::int64_t, double, const Bodies&) { return !interrupt_signal(); }, start.step);
-            }
-        });  // warm: the metrics run has just made the same steps (harness/timing.hpp)
-        const double scale = static_cast<double>(steps) / static_cast<double>(timed_steps);
-        for (double& sample : cpu.samples) sample *= scale;
-        cpu = {cpu.median * scale, cpu.min * scale, cpu.max * scale, cpu.repeats, cpu.samples};
+        timed_steps = SampledTiming(steps).timed_steps();
+        cpu = timing_run(*scene, make, dt, steps, checkpoints);
         result.timing_samples = cpu.samples;
     }
     if (interrupt_signal()) {  // the run or its timing was cut short: not a result
