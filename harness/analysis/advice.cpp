@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
@@ -25,8 +26,6 @@ struct Outcome {
     std::string why;
 };
 
-// Each of the scheme's runs is a task of the executor: a plug-in's in its worker, so that one that
-// crashes or hangs is not recommended, with the reason, and the other schemes are still advised.
 // The dt the ladder gives for the tolerance, with how and the error it predicts: dt0 when the first
 // rung meets it, a measured rung after an unstable one, else interpolated between the first rung
 // that meets it and the one before; NaN when none does.
@@ -49,6 +48,54 @@ double chosen_dt(const std::vector<RunResult>& ladder, double dt0, double tolera
     return NAN;
 }
 
+// A scheme's runs on halving steps, with the points its order is fitted to and the costs measured.
+struct Ladder {
+    std::function<RunResult(double)> run;  // a timed run at dt
+    std::vector<RunResult> rungs;
+    std::vector<OrderPoint> points;
+    std::vector<double> ns;
+
+    void add(double dt) {
+        rungs.push_back(run(dt));
+        const RunResult& r = rungs.back();
+        if (stable(r) && relative_omega_error(r) < advice_asymptotic_error) points.push_back({r.spec.dt, relative_omega_error(r)});
+        if (std::isfinite(r.value(metric::ns_per_step))) ns.push_back(r.value(metric::ns_per_step));
+    }
+    bool meets(double tolerance) const {
+        return std::any_of(rungs.begin(), rungs.end(), [&](const RunResult& r) { return stable(r) && relative_omega_error(r) <= tolerance; });
+    }
+};
+
+// Grows a stable ladder until a measured rung meets the tolerance; why it cannot, or "".
+// `extrapolated` says so when a rung was placed by extrapolation.
+std::string reach(Ladder& ladder, double tolerance, double t_end, std::string& extrapolated) {
+    std::vector<RunResult>& rungs = ladder.rungs;
+    // A scheme whose limit is far above the steps its accuracy needs (zvw_corrected on a stiff
+    // contact) ends its ladder before its error is asymptotic: halve on, while the error still
+    // falls, until the order can be fitted (a run costs no more than advice_max_steps).
+    while (!ladder.meets(tolerance) && !fit_order(ladder.points).sufficient && stable(rungs.back()) &&
+           relative_omega_error(rungs.back()) < relative_omega_error(rungs[rungs.size() - 2]) &&
+           t_end / (rungs.back().spec.dt / 2) <= advice_max_steps)
+        ladder.add(rungs.back().spec.dt / 2);
+    // No rung meets the tolerance: extrapolate from the finest with the observed order, run
+    // there, and again from that run, until a measured rung meets it; the dt is then always
+    // interpolated between two measured rungs, never taken on trust from an extrapolation.
+    for (int search = 0; search < advice_searches && !ladder.meets(tolerance); ++search) {
+        const OrderFit fit = fit_order(ladder.points);
+        const RunResult& finest = rungs.back();
+        if (!stable(finest) || !fit.sufficient || fit.order < 0.5)
+            return fmt::format("does not reach {:g} on the ladder down to {:.3g} s, and its error has no order to extrapolate with",
+                               tolerance, finest.spec.dt);
+        const double next = finest.spec.dt * std::pow(advice_error_margin * tolerance / relative_omega_error(finest), 1.0 / fit.order);
+        if (t_end / next > advice_max_steps) return fmt::format("needs dt = {:.3g} s, {:.3g} steps over {:g} s", next, t_end / next, t_end);
+        extrapolated = fmt::format(" (after extrapolating with order {:.2f})", fit.order);
+        ladder.add(next);
+    }
+    return "";
+}
+
+// Each of the scheme's runs is a task of the executor: a plug-in's in its worker, so that one that
+// crashes or hangs is not recommended, with the reason, and the other schemes are still advised.
 Outcome advise_one(Executor& executor, const StabilityProbe& probe, const ParamOverrides& params, double t_end, double tolerance,
                    const std::string& scheme, bool verify) {
     Outcome o;
@@ -65,56 +112,26 @@ Outcome advise_one(Executor& executor, const StabilityProbe& probe, const ParamO
         spec.timed = timed;
         return executor.run(spec);
     };
-    std::vector<RunResult> ladder;
-    std::vector<OrderPoint> points;
-    std::vector<double> ns;
-    const auto add_rung = [&](double dt) {
-        ladder.push_back(run_at(dt, true));
-        const RunResult& r = ladder.back();
-        if (stable(r) && relative_omega_error(r) < advice_asymptotic_error) points.push_back({r.spec.dt, relative_omega_error(r)});
-        if (std::isfinite(r.value(metric::ns_per_step))) ns.push_back(r.value(metric::ns_per_step));
-    };
-    for (int k = 0; k < advice_ladder_rungs && t_end / (dt0 / std::pow(2.0, k)) <= advice_max_steps; ++k) add_rung(dt0 / std::pow(2.0, k));
-    if (ladder.size() < 2)
+    Ladder ladder{[&](double dt) { return run_at(dt, true); }, {}, {}, {}};
+    for (int k = 0; k < advice_ladder_rungs && t_end / (dt0 / std::pow(2.0, k)) <= advice_max_steps; ++k) ladder.add(dt0 / std::pow(2.0, k));
+    const std::vector<RunResult>& rungs = ladder.rungs;
+    if (rungs.size() < 2)
         return {false, o.r, fmt::format("its ladder from {:.3g} s would need more than {:.3g} steps a run over {:g} s (the budget of a run)",
                                         dt0, advice_max_steps, t_end)};
     // A blow-up is the scheme's instability (it records its fail_step); anything else crashed, hung or threw.
-    if (!ladder.front().failure.empty() && !ladder.front().has(metric::fail_step))
-        return {false, o.r, "its run failed: " + ladder.front().failure};
-    if (!stable(ladder.front()))  // the search's horizon is the criterion's; a run may still fail
+    if (!rungs.front().failure.empty() && !rungs.front().has(metric::fail_step))
+        return {false, o.r, "its run failed: " + rungs.front().failure};
+    if (!stable(rungs.front()))  // the search's horizon is the criterion's; a run may still fail
         return {false, o.r, fmt::format("unstable at {:.3g} s below its measured limit {:.3g} s", dt0, limit)};
-    // No rung meets the tolerance: extrapolate from the finest with the observed order, run
-    // there, and again from that run, until a measured rung meets it; the dt is then always
-    // interpolated between two measured rungs, never taken on trust from an extrapolation.
-    const auto meets = [&](const RunResult& r) { return stable(r) && relative_omega_error(r) <= tolerance; };
-    // A scheme whose limit is far above the steps its accuracy needs (zvw_corrected on a stiff
-    // contact) ends its ladder before its error is asymptotic: halve on, while the error still
-    // falls, until the order can be fitted (a run costs no more than advice_max_steps).
-    while (std::none_of(ladder.begin(), ladder.end(), meets) && !fit_order(points).sufficient && stable(ladder.back()) && ladder.size() >= 2 &&
-           relative_omega_error(ladder.back()) < relative_omega_error(ladder[ladder.size() - 2]) && t_end / (ladder.back().spec.dt / 2) <= advice_max_steps)
-        add_rung(ladder.back().spec.dt / 2);
     std::string extrapolated;
-    for (int search = 0; search < advice_searches && std::none_of(ladder.begin(), ladder.end(), meets); ++search) {
-        const OrderFit fit = fit_order(points);
-        const RunResult& finest = ladder.back();
-        if (!stable(finest) || !fit.sufficient || fit.order < 0.5)
-            return {false, o.r, fmt::format("does not reach {:g} on the ladder down to {:.3g} s, and its error has no order to "
-                                            "extrapolate with", tolerance, finest.spec.dt)};
-        const double next = finest.spec.dt * std::pow(advice_error_margin * tolerance / relative_omega_error(finest), 1.0 / fit.order);
-        if (t_end / next > advice_max_steps)
-            return {false, o.r, fmt::format("needs dt = {:.3g} s, {:.3g} steps over {:g} s", next, t_end / next, t_end)};
-        extrapolated = fmt::format(" (after extrapolating with order {:.2f})", fit.order);
-        add_rung(next);
-    }
-    const double dt = chosen_dt(ladder, dt0, tolerance, extrapolated, o.r);
-    if (std::isnan(dt))
-        return {false, o.r, fmt::format("does not reach {:g} down to {:.3g} s", tolerance, ladder.back().spec.dt)};
-    if (t_end / dt > advice_max_steps)
-        return {false, o.r, fmt::format("needs dt = {:.3g} s, {:.3g} steps over {:g} s", dt, t_end / dt, t_end)};
+    if (const std::string why = reach(ladder, tolerance, t_end, extrapolated); !why.empty()) return {false, o.r, why};
+    const double dt = chosen_dt(rungs, dt0, tolerance, extrapolated, o.r);
+    if (std::isnan(dt)) return {false, o.r, fmt::format("does not reach {:g} down to {:.3g} s", tolerance, rungs.back().spec.dt)};
+    if (t_end / dt > advice_max_steps) return {false, o.r, fmt::format("needs dt = {:.3g} s, {:.3g} steps over {:g} s", dt, t_end / dt, t_end)};
     o.r.dt = dt;
     o.r.stability_ratio = limit / probe.predicted_limit();
-    for (const auto& r : ladder) o.r.ladder.push_back({r.spec.dt, stable(r) ? relative_omega_error(r) : NAN});
-    if (const OrderFit fit = fit_order(points); fit.sufficient) o.r.order = fit.order, o.r.order_lo = fit.order_lo, o.r.order_hi = fit.order_hi;
+    for (const auto& r : rungs) o.r.ladder.push_back({r.spec.dt, stable(r) ? relative_omega_error(r) : NAN});
+    if (const OrderFit fit = fit_order(ladder.points); fit.sufficient) o.r.order = fit.order, o.r.order_lo = fit.order_lo, o.r.order_hi = fit.order_hi;
     // The part of the error that is not the rotation scheme's: the exact rotation flow at the same dt.
     if (const RunResult exact = run_at(dt, false, advice_exact_rotation); stable(exact)) {
         o.r.exact_rotation_error = relative_omega_error(exact);
@@ -124,7 +141,7 @@ Outcome advise_one(Executor& executor, const StabilityProbe& probe, const ParamO
                      : std::isnan(o.r.contact_share)                ? "unknown"  // the exact rotation flow failed at dt
                      : o.r.contact_share >= advice_contact_share ? "contact"
                                                                      : "rotation";
-    o.r.ns_per_step = median(ns);
+    o.r.ns_per_step = median(ladder.ns);
     o.r.cpu_seconds = o.r.ns_per_step * 1e-9 / dt;
     if (verify) {
         const RunResult v = run_at(dt, false);
