@@ -1,0 +1,25 @@
+"""The torque of a rotbench scene at an orientation, for lammps_asphere.py and the callback it
+hands LAMMPS (docs/clients.md). Python 3 stdlib only."""
+
+
+def rot(q):  # body -> world rotation matrix of a unit quaternion (w, x, y, z)
+    w, x, y, z = q
+    return [[1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
+            [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
+            [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)]]
+
+
+def matvec(m, v):
+    return [sum(m[i][j] * v[j] for j in range(3)) for i in range(3)]
+
+
+def cross(a, b):
+    return [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+
+
+def torque_of(q, law):  # the scene's torque (scene.json's "torque") at orientation q, world frame
+    if law["law"] == "dipole":
+        return cross(matvec(rot(q), law["dipole_body"]), law["field_world"])
+    if law["law"] == "body_constant":
+        return matvec(rot(q), law["torque_body"])
+    return [0.0, 0.0, 0.0]
