@@ -13,6 +13,7 @@
 #include <sys/stat.h>
 #include <sys/resource.h>
 #include <csignal>
+#include <set>
 #include <sstream>
 
 using namespace rotbench;
@@ -107,6 +108,33 @@ TEST_CASE("the q^n-frame Fincham leapfrog fails the default gate on its order cl
         CHECK_THAT(report, !Catch::Contains("**For short runs**"));
         fs::remove_all(dir);
     }
+}
+
+TEST_CASE("gate --quick: the default gate's verdicts on each ladder's finest rungs, from fewer runs, and a wrong order still fails") {
+    const fs::path dir = fresh_dir("gate_quick");
+    const Cli whole = binary({"gate", default_gate_without_timing(), "--out", (dir / "whole").string()});
+    const Cli quick = binary({"gate", default_gate_without_timing(), "--quick", "--out", (dir / "quick").string()});
+    REQUIRE(whole.status == 0);
+    REQUIRE(quick.status == 0);
+    const auto verdicts = [](const std::string& out) {  // each case's word and name, not its figures
+        std::istringstream in(out);
+        std::multiset<std::string> kept;
+        for (std::string line; std::getline(in, line);)
+            if (const auto name_end = line.find(" on "); line.rfind("PASS ", 0) == 0 || line.rfind("XFAIL ", 0) == 0 || line.rfind("FAIL ", 0) == 0)
+                kept.insert(line.substr(0, name_end));
+        return kept;
+    };
+    CHECK(verdicts(quick.out) == verdicts(whole.out));
+    CHECK(verdicts(quick.out).size() > 100);
+    // An order claim is fitted on the quick_rungs finest steps of the scene's ladder.
+    CHECK_THAT(quick.out, Catch::Contains("PASS asymmetric_free/zvw: zvw: order_without_torque on asymmetric_free: observed order 2.00") &&
+                              Catch::Contains("over dt 0.00313 ... 0.000781 (3 points)"));
+    CHECK(count_of(read(dir / "quick" / "runs.csv"), "\n") < count_of(read(dir / "whole" / "runs.csv"), "\n") * 2 / 3);
+    const Cli wrong = binary({"gate", default_gate_without_timing(), "--quick", "--plugin", PLUGIN_END_VELOCITY_ZVW, "--schemes", "zvw_end_velocity"});
+    CHECK(wrong.status == 1);
+    CHECK_THAT(wrong.out, Catch::Contains("FAIL asymmetric_free/zvw_end_velocity: zvw_end_velocity: order_without_torque on "
+                                          "asymmetric_free: observed order 1.00"));
+    fs::remove_all(dir);
 }
 
 TEST_CASE("a plug-in that claims nothing gets the generic sanity checks and a warning") {

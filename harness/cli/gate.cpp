@@ -73,6 +73,7 @@ public:
         command.add_option("--results", results_, "DIR: judge the runs in DIR (e.g. merged shards) instead of running them");
         command.add_option("--baseline", baseline_, "DIR: also fail on regressions against the runs in DIR (as rotbench compare)");
         command.add_option("--shard", shard_, "K/N: run only the K-th of N slices of the gate's runs (judge the merge with --results)");
+        command.add_flag("--quick", quick_, "each scene's short ladder of time steps where the file gives none (a CI step in minutes)");
         command.add_option("--schemes", schemes_, "comma list of scheme ids: gate only these (default: all the file names)");
         command.add_option("--jobs", jobs_, "runs in parallel (results do not depend on it)")->check(CLI::Range(1, max_jobs));
         isolation_.add_to(command);
@@ -84,7 +85,7 @@ public:
         const std::vector<std::string> only = schemes_.empty() ? std::vector<std::string>{} : parse_id_list(schemes_, SchemeRegistry::instance(), "scheme");
         GateFile file = load_gate(file_, only);
         if (!only.empty()) file = only_schemes(std::move(file), only);
-        const GatePlan plan = plan_gate(file);
+        const GatePlan plan = plan_gate(file, quick_);
         const PlanSlice slice = slice_plan(plan.runs, shard_);
         if (slice.shard && out_.empty()) throw InputError("--shard needs --out: a slice's runs are only worth their files");
         if (slice.shard && !results_.empty()) throw InputError("--results judges runs already made: no --shard with it");
@@ -154,7 +155,7 @@ private:
     std::string file_, junit_, summary_, out_, results_, shard_, baseline_, schemes_;
     IsolationOptions isolation_;
     int jobs_ = core_count();
-    bool overwrite_ = false;
+    bool overwrite_ = false, quick_ = false;
 };
 
 const RegisterVerb<GateVerb> registration("gate", "hold every scheme to its claims and the checks of a gate file; exit 1 if any fails");

@@ -34,8 +34,11 @@ struct GatePlan {
     std::vector<std::string> warnings;  // e.g. a scheme that claims nothing
 };
 
-// InputError when the file asks for something the registries cannot give.
-GatePlan plan_gate(const GateFile& file);
+// InputError when the file asks for something the registries cannot give. `quick`: each ladder
+// that a claim or check leaves to the scene is its default ladder's finest quick_rungs, so that a
+// client's program is started a few times, not dozens.
+inline constexpr std::size_t quick_rungs = 3;
+GatePlan plan_gate(const GateFile& file, bool quick = false);
 
 // What was decided for one case.
 struct Verdict {

@@ -28,7 +28,7 @@ std::string workspace_relative(const std::string& location) {
 
 class Planner {
 public:
-    explicit Planner(const GateFile& file) : file_(file) {}
+    Planner(const GateFile& file, bool quick) : file_(file), quick_(quick) {}
 
     std::size_t run(RunSpec spec) {
         // The scene's duration written out, as its run records it: a slice's runs must make the
@@ -104,7 +104,7 @@ public:
                 if (skipped(scheme, scene)) continue;
                 if (c.with_torque.order > 0) claim("order_with_torque", scene, ladder(scene, scheme, dts(scene)), c.with_torque.order);
                 if (c.bounded_energy)  // the coarsest step of the ladder
-                    claim("bounded_energy", scene, {run({scene, scheme, dts(scene).front(), 0.0, {}, RunKind::horizon, false})});
+                    claim("bounded_energy", scene, {run({scene, scheme, coarsest(scene), 0.0, {}, RunKind::horizon, false})});
                 if (c.time_reversible) claim("time_reversible", scene, {reversal(scene, scheme)});
             }
         }
@@ -121,7 +121,7 @@ public:
                 }
                 std::vector<std::size_t> runs;
                 if (c.criterion == "min_order" || c.criterion == "same_map_as") {
-                    runs = ladder(c.scene, scheme, c.dts.empty() ? make_scene(c.scene, c.params)->default_dts() : c.dts, c.t_end, c.params);
+                    runs = ladder(c.scene, scheme, c.dts.empty() ? dts(c.scene, c.params) : c.dts, c.t_end, c.params);
                 } else if (c.criterion == "min_stability") {
                     runs = {run({c.scene, scheme, 0.0, c.t_end, c.params, RunKind::stability, false})};
                 } else if (c.criterion == "max_cost_ratio") {
@@ -154,12 +154,22 @@ private:
             plan_.warnings.push_back(why + ": not judged there");
         return !why.empty();
     }
-    std::vector<double> dts(const std::string& scene) { return make_scene(scene)->default_dts(); }
+    // A ladder the file leaves to the scene: its default one, or with --quick its finest
+    // quick_rungs, where every sound scheme's error is already asymptotic (the coarse rungs are
+    // the ones an order fit would set aside).
+    std::vector<double> dts(const std::string& scene, const ParamOverrides& params = {}) {
+        std::vector<double> ladder = make_scene(scene, params)->default_dts();
+        if (quick_ && ladder.size() > quick_rungs) ladder.erase(ladder.begin(), ladder.end() - quick_rungs);
+        return ladder;
+    }
+    // The bounded-energy and reversal runs' step, with or without --quick: the hardest, the coarsest.
+    double coarsest(const std::string& scene) { return make_scene(scene)->default_dts().front(); }
     std::size_t reversal(const std::string& scene, const std::string& scheme) {
-        return run({scene, scheme, dts(scene).front(), 0.0, {}, RunKind::reversal, false});
+        return run({scene, scheme, coarsest(scene), 0.0, {}, RunKind::reversal, false});
     }
 
     const GateFile& file_;
+    bool quick_;  // gate --quick
     GatePlan plan_;
     std::map<RunSpec, std::size_t> index_;
     std::map<std::pair<std::string, ParamOverrides>, double> t_ends_;  // each scene's default duration
@@ -167,8 +177,8 @@ private:
 
 }  // namespace
 
-GatePlan plan_gate(const GateFile& file) {
-    Planner planner(file);
+GatePlan plan_gate(const GateFile& file, bool quick) {
+    Planner planner(file, quick);
     planner.claims();
     planner.checks();
     GatePlan plan = planner.take();
