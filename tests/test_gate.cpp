@@ -137,6 +137,25 @@ TEST_CASE("gate --quick: the default gate's verdicts on each ladder's finest run
     fs::remove_all(dir);
 }
 
+TEST_CASE("gate: [claims.SCENE] sets a scene's ladder and parameters for every claim judged there") {
+    const fs::path dir = fresh_dir("gate_claim_scene");
+    fs::create_directories(dir);
+    write(dir / "g.toml", "[claims]\nschemes = [\"zvw\", \"no_squish\"]\nfree = [\"tumbling_brick\", \"cylinder_free\"]\n"
+                          "torque = [\"dipole_top\"]\n[claims.cylinder_free]\ndt = [0.001, 0.004, 0.002]\n"
+                          "[claims.tumbling_brick]\nparams = { t_end = 1.0 }\n");
+    const Cli r = cli({"gate", (dir / "g.toml").string(), "--quick"});  // a ladder the file gives is kept under --quick
+    INFO(r.out << r.err);
+    CHECK(r.status == 0);
+    // cylinder_free's claims on the file's three steps, coarsest first, not the scene's 500,000-step ladder.
+    CHECK_THAT(r.out, Catch::Contains("zvw: order_without_torque on cylinder_free: observed order 2.0") &&
+                          Catch::Contains("over dt 0.004 ... 0.001 (3 points)"));
+    // tumbling_brick's every claim over its shorter duration: the ladder's, the momentum's and the reversal's.
+    CHECK_THAT(r.out, Catch::Contains("no_squish: time_reversible on tumbling_brick: after 100 steps forward"));
+    CHECK_THAT(r.out, Catch::Contains("no_squish: conserves_momentum on tumbling_brick: momentum drift") &&
+                          Catch::Contains("for N = 800 steps"));  // at the coarsest step of its --quick ladder, over 1 s
+    fs::remove_all(dir);
+}
+
 TEST_CASE("a plug-in that claims nothing gets the generic sanity checks and a warning") {
     const Cli r = binary({"gate", default_gate_without_timing(), "--plugin", PLUGIN_CLAIMS_NOTHING, "--schemes", "claims_nothing"});
     CHECK(r.status == 0);  // a sound scheme passes them
@@ -356,6 +375,12 @@ TEST_CASE("gate: bad gate files give one line with file, line and column, and ex
         {"[claims]\nschemes = [\"*\"]\nfree = [\"asymmetric_free\", \"tumbling_brick\"]\ntorque = [\"fibre_bounce\"]\n",
          "'fibre_bounce' is not a scene with a reference and an orientation-dependent torque"},
         {claims + "sideways = 1\n", "unknown key 'sideways' in [claims]"},
+        {claims + "[claims.asymmetric_free]\ndt = [0.1, 0.05]\n", "an order is fitted on at least 3 time steps in 'dt'"},
+        {claims + "[claims.asymmetric_free]\ndt = [0.1, 0.05, 0.1]\n", "'dt' has a duplicate value"},
+        {claims + "[claims.asymmetric_free]\nladder = [0.1]\n", "unknown key 'ladder' in [claims.asymmetric_free]; valid keys: dt, params"},
+        {claims + "[claims.asymmetric_free]\nparams = { omega = 1 }\n", "unknown parameter"},
+        {claims + "[claims.cylinder_free]\ndt = [0.1, 0.05, 0.025]\n", "[claims.cylinder_free] is for a scene neither 'free' nor 'torque' lists"},
+        {claims + "[claims.tumbling_brick]\nparams = { t_end = -1 }\n", "[claims.tumbling_brick] params: "},
         {claims + "[[expected_failure]]\ncheck = \"order_without_torque\"\nscene = \"asymmetric_free\"\nscheme = \"direct\"\n",
          "needs 'check', 'scene', 'scheme' and a 'reason'"},
         {claims + "[[expected_failure]]\ncheck = \"nonsense\"\nscene = \"asymmetric_free\"\nscheme = \"direct\"\nreason = \"r\"\n",

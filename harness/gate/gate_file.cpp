@@ -111,6 +111,17 @@ void check_steps(const std::string& path, const toml::table& t, const GateCheck&
     if (c.criterion == "min_order" && !c.dts.empty() && c.dts.size() < 3) toml_error(path, t, "min_order needs at least 3 time steps in 'dt'");
 }
 
+// A 'dt' list: finite steps greater than 0, none twice.
+std::vector<double> steps(const std::string& path, const toml::node& v) {
+    std::vector<double> dts = numbers(path, "dt", v);
+    for (double dt : dts)
+        if (!(dt > 0.0) || !std::isfinite(dt)) toml_error(path, v, "'dt' values must be finite numbers greater than 0");
+    auto sorted = dts;
+    std::sort(sorted.begin(), sorted.end());
+    if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) toml_error(path, v, "'dt' has a duplicate value");
+    return dts;
+}
+
 GateCheck read_check(const std::string& path, const toml::table& t, std::size_t index, const Selection& selection) {
     GateCheck c;
     c.location = fmt::format("{}:{}", path, t.source().begin.line);
@@ -137,12 +148,7 @@ GateCheck read_check(const std::string& path, const toml::table& t, std::size_t 
             if (std::find(known_metrics().begin(), known_metrics().end(), metric) == known_metrics().end())
                 toml_error(path, v, "unknown metric '" + metric + "'; valid metrics: " + join(known_metrics(), ", "));
         } else if (key == "dt") {
-            c.dts = numbers(path, key, v);
-            for (double dt : c.dts)
-                if (!(dt > 0.0) || !std::isfinite(dt)) toml_error(path, v, "'dt' values must be finite numbers greater than 0");
-            auto sorted = c.dts;
-            std::sort(sorted.begin(), sorted.end());
-            if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) toml_error(path, v, "'dt' has a duplicate value");
+            c.dts = steps(path, v);
         } else if (key == "t_end") c.t_end = positive_number(path, key, v);
         else if (key == "round_off") c.round_off = positive_number(path, key, v);
         else if (key == "params") {
@@ -195,6 +201,25 @@ std::vector<std::string> claim_scenes(const std::string& path, const std::string
     return list;
 }
 
+// [claims.SCENE]: a ladder of at least 3 steps and scene parameters for the claims on SCENE.
+ClaimScene read_claim_scene(const std::string& path, const std::string& scene, const toml::table& t) {
+    ClaimScene c;
+    for (auto&& [k, v] : t) {
+        const std::string key(k.str());
+        if (key == "dt") {
+            c.dts = steps(path, v);
+            if (c.dts.size() < 3) toml_error(path, v, "an order is fitted on at least 3 time steps in 'dt'");
+            std::sort(c.dts.rbegin(), c.dts.rend());  // coarsest first, as a scene's ladder
+        } else if (key == "params") {
+            if (!v.as_table()) toml_error(path, v, "'params' must be a table of scene parameters");
+            c.params = scene_overrides(path, scene, *v.as_table());
+        } else {
+            toml_error(path, v, "unknown key '" + key + "' in [claims." + scene + "]; valid keys: dt, params");
+        }
+    }
+    return c;
+}
+
 ClaimsSection read_claims(const std::string& path, const toml::table& t, const Selection& selection) {
     ClaimsSection c;
     c.present = true;
@@ -212,11 +237,23 @@ ClaimsSection read_claims(const std::string& path, const toml::table& t, const S
         } else if (key == "torque") {
             c.torque_scenes = claim_scenes(path, key, v, true);
             has_torque = true;
+        } else if (v.as_table() && SceneRegistry::instance().contains(key)) {
+            c.scenes[key] = read_claim_scene(path, key, *v.as_table());
         } else {
-            toml_error(path, v, "unknown key '" + key + "' in [claims]; valid keys: schemes, free, torque");
+            toml_error(path, v, "unknown key '" + key + "' in [claims]; valid keys: schemes, free, torque, and a table [claims.SCENE] "
+                                "for a scene of those lists");
         }
     }
     if (!has_schemes || !has_free || !has_torque) throw InputError(c.location + ": [claims] needs 'schemes', 'free' and 'torque'");
+    for (const auto& [scene, settings] : c.scenes) {
+        const bool free = std::find(c.free_scenes.begin(), c.free_scenes.end(), scene) != c.free_scenes.end();
+        if (!free && std::find(c.torque_scenes.begin(), c.torque_scenes.end(), scene) == c.torque_scenes.end()) throw InputError(c.location + ": [claims." + scene + "] is for a scene neither 'free' nor 'torque' lists");
+        try {
+            make_scene(scene, settings.params);  // parameters valid together, named on error
+        } catch (const InputError& e) {
+            throw InputError(c.location + ": [claims." + scene + "] params: " + e.what());
+        }
+    }
     if (c.free_scenes.size() < 2) throw InputError(c.location + ": [claims] 'free' needs at least two torque-free scenes");
     return c;
 }

@@ -4,6 +4,9 @@
 //   schemes = ["*"]                # "*": every registered scheme, plug-ins and controls included
 //   free    = ["asymmetric_free", "tumbling_brick"]   # torque-free scenes with a reference
 //   torque  = ["dipole_top"]       # scenes with an orientation-dependent torque
+//   [claims.tumbling_brick]        # optional, for a scene of those lists: its claims' ladder
+//   dt = [0.01, 0.005, 0.0025]     # (at least 3 steps; the coarsest is also the bounded-energy
+//   params = { ... }               # and reversal runs' step) and scene parameters
 //
 //   [[check]]                      # one criterion on one scene for a list of schemes
 //   name      = "..."              # optional; the check's id in summaries and expected failures
@@ -24,6 +27,7 @@
 
 #include "harness/scenes/params.hpp"
 
+#include <map>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -47,10 +51,17 @@ struct GateCheck {
     std::string location;  // file:line of the [[check]]
 };
 
+// What [claims.SCENE] sets for the claims judged on that scene.
+struct ClaimScene {
+    std::vector<double> dts;  // empty: the scene's ladder
+    ParamOverrides params;
+};
+
 struct ClaimsSection {
     bool present = false;
     std::vector<std::string> schemes;
     std::vector<std::string> free_scenes, torque_scenes;
+    std::map<std::string, ClaimScene> scenes;
     std::string location;
 };
 

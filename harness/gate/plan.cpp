@@ -80,7 +80,7 @@ public:
                                                       "checks only (order at least 0.8, angular momentum within 5 %)");
                 for (const auto& scene : section.free_scenes) {
                     if (skipped(scheme, scene)) continue;
-                    const auto runs = ladder(scene, scheme, dts(scene));
+                    const auto runs = claim_ladder(scene, scheme);
                     add({"sanity_order", "sanity", "sanity_order", scene, scheme, runs, std::numeric_limits<std::size_t>::max(), 0,
                          section.location});
                     add({"sanity_momentum", "sanity", "sanity_momentum", scene, scheme, {runs.back()},
@@ -88,13 +88,13 @@ public:
                 }
                 for (const auto& scene : section.torque_scenes)
                     if (!skipped(scheme, scene))
-                        add({"sanity_order", "sanity", "sanity_order", scene, scheme, ladder(scene, scheme, dts(scene)),
+                        add({"sanity_order", "sanity", "sanity_order", scene, scheme, claim_ladder(scene, scheme),
                          std::numeric_limits<std::size_t>::max(), 0, section.location});
                 continue;
             }
             for (const auto& scene : section.free_scenes) {
                 if (skipped(scheme, scene)) continue;
-                const auto runs = ladder(scene, scheme, dts(scene));
+                const auto runs = claim_ladder(scene, scheme);
                 if (c.without_torque.order > 0) claim("order_without_torque", scene, runs, c.without_torque.order);
                 if (c.exact_without_torque) claim("exact_without_torque", scene, runs);
                 if (c.conserves_momentum) claim("conserves_momentum", scene, runs);
@@ -102,9 +102,9 @@ public:
             }
             for (const auto& scene : section.torque_scenes) {
                 if (skipped(scheme, scene)) continue;
-                if (c.with_torque.order > 0) claim("order_with_torque", scene, ladder(scene, scheme, dts(scene)), c.with_torque.order);
+                if (c.with_torque.order > 0) claim("order_with_torque", scene, claim_ladder(scene, scheme), c.with_torque.order);
                 if (c.bounded_energy)  // the coarsest step of the ladder
-                    claim("bounded_energy", scene, {run({scene, scheme, coarsest(scene), 0.0, {}, RunKind::horizon, false})});
+                    claim("bounded_energy", scene, {run({scene, scheme, coarsest(scene), 0.0, claim_scene(scene).params, RunKind::horizon, false})});
                 if (c.time_reversible) claim("time_reversible", scene, {reversal(scene, scheme)});
             }
         }
@@ -162,10 +162,23 @@ private:
         if (quick_ && ladder.size() > quick_rungs) ladder.erase(ladder.begin(), ladder.end() - quick_rungs);
         return ladder;
     }
+    // What [claims.SCENE] sets for the claims on a scene (nothing: the scene's ladder and defaults).
+    const ClaimScene& claim_scene(const std::string& scene) const {
+        static const ClaimScene none;
+        const auto found = file_.claims.scenes.find(scene);
+        return found == file_.claims.scenes.end() ? none : found->second;
+    }
+    std::vector<std::size_t> claim_ladder(const std::string& scene, const std::string& scheme) {
+        const ClaimScene& settings = claim_scene(scene);
+        return ladder(scene, scheme, settings.dts.empty() ? dts(scene, settings.params) : settings.dts, 0.0, settings.params);
+    }
     // The bounded-energy and reversal runs' step, with or without --quick: the hardest, the coarsest.
-    double coarsest(const std::string& scene) { return make_scene(scene)->default_dts().front(); }
+    double coarsest(const std::string& scene) {
+        const ClaimScene& settings = claim_scene(scene);
+        return settings.dts.empty() ? make_scene(scene, settings.params)->default_dts().front() : settings.dts.front();
+    }
     std::size_t reversal(const std::string& scene, const std::string& scheme) {
-        return run({scene, scheme, coarsest(scene), 0.0, {}, RunKind::reversal, false});
+        return run({scene, scheme, coarsest(scene), 0.0, claim_scene(scene).params, RunKind::reversal, false});
     }
 
     const GateFile& file_;
