@@ -10,6 +10,7 @@
 #include "harness/store/client.hpp"
 
 #include <catch2/catch.hpp>
+#include <regex>
 #include <unistd.h>
 #include <chrono>
 #include <thread>
@@ -369,6 +370,38 @@ TEST_CASE("clients: compare says when a client's program files changed between t
     INFO(c.out << c.err);
     CHECK(c.status == 0);  // the same results: no regression, but the reader is told
     CHECK_THAT(c.out, Catch::Contains("WARNING client client_versioned: its program's files changed (FNV-1a " + before + " -> 0000000000000000)"));
+    fs::remove_all(dir);
+}
+
+TEST_CASE("clients: two versions of one code side by side, the later one compared with the earlier as with a counterpart") {
+    const fs::path dir = fresh_dir("client_versions");
+    // Version 1 is richardson's map; version 2 the same code again; version 3 a change that keeps
+    // the order but leaves the map (no_squish's). Each later version names version 1 its counterpart.
+    const fs::path v1 = client_file(dir, "code_v1", "richardson", "", "claims = \"richardson\"\n");
+    const fs::path v2 = client_file(dir, "code_v2", "richardson", "", "claims = \"richardson\"\ncounterpart = \"code_v1\"\n");
+    const fs::path v3 = client_file(dir, "code_v3", "no_squish", "", "claims = \"richardson\"\ncounterpart = \"code_v1\"\n");
+    const std::vector<std::string> clients = {"--client", v1.string(), "--client", v2.string(), "--client", v3.string()};
+    auto args = clients;
+    args.insert(args.end(), {"run", "--scenes", "asymmetric_free", "--schemes", "code_v1,code_v2,code_v3", "--dt", "0.05,0.025,0.0125",
+                             "--out", (dir / "run").string()});
+    const Cli r = cli(args);
+    INFO(r.out << r.err);
+    REQUIRE(r.status == 0);
+    const std::string report = read(dir / "run" / "report.md");
+    CHECK(std::regex_search(report, std::regex(R"(\| `code_v2` \| `code_v1` \| `asymmetric_free` \| 0 \(dt 0.05\) \| 0 \| 0.0125 \| 0 \| the same, to round-off \|)")));
+    CHECK(std::regex_search(report, std::regex(R"(\| `code_v3` \| `code_v1` \| `asymmetric_free` \| [0-9.e-]+ \(dt 0.05\) .*\| another map: the difference falls as dt\^2\.)")));
+    // The same in a gate: same_map_as may name a client.
+    write(dir / "gate.toml", "[[check]]\nscene = \"asymmetric_free\"\nschemes = [\"code_v2\", \"code_v3\"]\nsame_map_as = \"code_v1\"\n"
+                             "dt = [0.05]\n");
+    auto gate = clients;
+    gate.insert(gate.end(), {"gate", (dir / "gate.toml").string()});
+    const Cli g = cli(gate);
+    CHECK(g.status == 1);
+    CHECK_THAT(g.out, Catch::Contains("PASS asymmetric_free/code_v2") && Catch::Contains("FAIL asymmetric_free/code_v3"));
+    // A counterpart must be loaded first (in a process of its own: this one holds code_v1 already).
+    const Cli bad = binary({"--client", v2.string(), "--client", v1.string(), "list"});
+    CHECK(bad.status == 2);
+    CHECK_THAT(bad.err, Catch::Contains("counterpart 'code_v1' is neither a built-in scheme nor a client loaded before this one"));
     fs::remove_all(dir);
 }
 

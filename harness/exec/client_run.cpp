@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <functional>
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
@@ -88,22 +89,51 @@ std::string read_rows(const fs::path& file, std::int64_t steps, double dt, std::
     return "";
 }
 
-// The client's largest difference from its counterpart, the built-in scheme run on the same
-// scene at the same step: both states compared at every step.
-void add_counterpart_difference(RunResult& result, const Scene& scene, const std::string& counterpart, const std::vector<Row>& rows) {
+// The states a built-in scheme makes on the scene at the same step, as the rows a program writes.
+std::vector<Row> builtin_rows(const Scene& scene, const std::string& scheme_id, double dt, std::int64_t steps) {
     Bodies b = scene.initial_state();
-    auto scheme = registered_scheme(counterpart)();
-    double omega_diff = 0, angle_diff = 0;
+    auto scheme = registered_scheme(scheme_id)();
+    const auto row = [dt](std::int64_t n, const Bodies& state) {
+        const Quat& q = state.orientation[0];
+        const Vec3& w = state.omega[0];
+        return Row{static_cast<double>(n) * dt, q.w(), q.x(), q.y(), q.z(), w.x(), w.y(), w.z()};
+    };
+    std::vector<Row> rows = {row(0, b)};
     std::int64_t evals = 0;
-    const std::int64_t steps = static_cast<std::int64_t>(rows.size()) - 1;
-    simulate(scene, *scheme, b, result.spec.dt, steps, evals, [&](std::int64_t n, double, const Bodies& state) {
-        const Row& r = rows[static_cast<std::size_t>(n)];
-        omega_diff = std::max(omega_diff, (state.omega[0] - Vec3(r[5], r[6], r[7])).norm());
-        angle_diff = std::max(angle_diff, rotation_angle_between(state.orientation[0], Quat(r[1], r[2], r[3], r[4]).normalized()));
-        return std::isfinite(omega_diff) && std::isfinite(angle_diff);
+    simulate(scene, *scheme, b, dt, steps, evals, [&](std::int64_t n, double, const Bodies& state) {
+        rows.push_back(row(n, state));
+        return std::isfinite(state.omega[0].norm());
     });
+    return rows;
+}
+
+// The largest differences between two trajectories of the same scene and step after t = 0 (the
+// given state): the angular velocity's and the orientation's angle; NaN when the other has no
+// trajectory (its program failed), inf when it stopped short (blew up).
+void add_counterpart_difference(RunResult& result, const std::vector<Row>& rows, const std::vector<Row>& other) {
+    double omega_diff = other.empty() ? NAN : 0.0, angle_diff = omega_diff;
+    for (std::size_t n = 1; n < rows.size() && n < other.size(); ++n) {
+        const Row &a = rows[n], &b = other[n];
+        omega_diff = std::max(omega_diff, (Vec3(a[5], a[6], a[7]) - Vec3(b[5], b[6], b[7])).norm());
+        angle_diff = std::max(angle_diff, rotation_angle_between(Quat(a[1], a[2], a[3], a[4]).normalized(), Quat(b[1], b[2], b[3], b[4]).normalized()));
+    }
+    if (!other.empty() && other.size() < rows.size()) omega_diff = angle_diff = INFINITY;
     result.metrics.emplace_back(metric::counterpart_omega_diff_max, omega_diff);
     result.metrics.emplace_back(metric::counterpart_angle_diff_max, angle_diff);
+}
+
+// The client's program on one scene.json, in a scratch directory of its own that goes with all
+// the program left in it: its output, and what `read` (called only when it exited 0) made of the
+// file it wrote, named `output`.
+WorkerOutput run_in_scratch(const LoadedClient& client, const std::string& scene_json, const std::string& output, double seconds,
+                            std::size_t megabytes, const std::function<void(const fs::path&)>& read) {
+    const Scratch scratch;
+    write_file_atomically(scratch.path / "scene.json", scene_json);
+    std::vector<std::string> args = client.program;
+    args.insert(args.end(), {"scene.json", output});
+    WorkerOutput out = run_program(args, scratch.path.string(), seconds, megabytes, "program");
+    if (!out.interrupted && out.failure.empty() && out.exit_status == 0) read(scratch.path / output);
+    return out;
 }
 
 }  // namespace
@@ -154,19 +184,23 @@ RunResult run_client(const RunSpec& requested, const RunOptions& options, const 
     const std::int64_t steps = step_count(t_end, requested.dt);
     auto* granular = dynamic_cast<GranularScene*>(scene.get());
     if (granular && requested.kind != RunKind::trajectory) return fail("a client runs a granular scene as a trajectory only");
-    const Scratch scratch;
     const std::string output = granular ? "samples.csv" : "trajectory.csv";
+    std::string scene_json;
     try {
-        write_file_atomically(scratch.path / "scene.json", granular ? granular_scene_json(*granular, requested, t_end, steps)
-                                                                    : client_scene_json(*scene, requested, t_end, steps));
+        scene_json = granular ? granular_scene_json(*granular, requested, t_end, steps) : client_scene_json(*scene, requested, t_end, steps);
     } catch (const InputError& e) {  // a scene its client file lists but no spec can describe
         return fail(e.what());
     }
-    std::vector<std::string> args = client.program;
-    args.insert(args.end(), {"scene.json", output});
     const double body_steps = static_cast<double>(steps) * static_cast<double>(granular ? scene->initial_state().size() : 1);
     const double seconds = limits.seconds > 0 ? limits.seconds : steps_timeout(body_steps);
-    const WorkerOutput out = run_program(args, scratch.path.string(), seconds, limits.megabytes ? limits.megabytes : isolation_memory(1), "program");
+    const std::size_t megabytes = limits.megabytes ? limits.megabytes : isolation_memory(1);
+    RunResult replayed;
+    std::vector<Row> rows;
+    std::string why;
+    const WorkerOutput out = run_in_scratch(client, scene_json, output, seconds, megabytes, [&](const fs::path& file) {
+        if (granular) replayed = replay_granular_samples(requested, *granular, file, steps);
+        else why = read_rows(file, steps, requested.dt, rows);
+    });
     if (out.interrupted) return RunResult{failed.spec, {}, {}, true};
     // The program's own cost, whatever became of its output: a slow rung is found by it.
     const auto timed = [&out](RunResult r) {
@@ -180,19 +214,28 @@ RunResult run_client(const RunSpec& requested, const RunOptions& options, const 
     }
     if (!out.failure.empty()) return timed(fail(out.failure));
     if (granular) {
-        RunResult result = replay_granular_samples(requested, *granular, scratch.path / output, steps);
-        if (!result.failure.empty()) result.failure += out.last_error_line;
-        result.spec.t_end = t_end;
-        result.metrics.emplace_back(metric::client_cpu_seconds_per_simulated_second, out.cpu_seconds / t_end);
-        return timed(std::move(result));
+        if (!replayed.failure.empty()) replayed.failure += out.last_error_line;
+        replayed.spec.t_end = t_end;
+        replayed.metrics.emplace_back(metric::client_cpu_seconds_per_simulated_second, out.cpu_seconds / t_end);
+        return timed(std::move(replayed));
     }
-    std::vector<Row> rows;
-    if (const std::string why = read_rows(scratch.path / "trajectory.csv", steps, requested.dt, rows); !why.empty())
-        return timed(fail(why + out.last_error_line));
+    if (!why.empty()) return timed(fail(why + out.last_error_line));
     const SchemeFactory replay = [&rows] { return std::make_unique<Replay>(rows); };
     if (requested.kind == RunKind::horizon) return timed(run_horizon(requested, replay));
     RunResult result = run_trajectory(requested, {.measure_time = false, .series_samples = options.series_samples}, replay);
-    if (!client.counterpart.empty() && result.failure.empty()) add_counterpart_difference(result, *scene, client.counterpart, rows);
+    if (!client.counterpart.empty() && result.failure.empty()) {
+        // Another client (another version of the same code): its program on the same scene.json.
+        std::vector<Row> other;
+        if (const LoadedClient* counterpart = client_of(client.counterpart)) {
+            const WorkerOutput their = run_in_scratch(*counterpart, scene_json, output, seconds, megabytes, [&](const fs::path& file) {
+                if (!read_rows(file, steps, requested.dt, other).empty()) other.clear();
+            });
+            if (their.interrupted) return RunResult{failed.spec, {}, {}, true};
+        } else {
+            other = builtin_rows(*scene, client.counterpart, requested.dt, steps);
+        }
+        add_counterpart_difference(result, rows, other);
+    }
     return timed(std::move(result));
 }
 

@@ -159,8 +159,8 @@ GateCheck read_check(const std::string& path, const toml::table& t, std::size_t 
             if (!c.criterion.empty()) toml_error(path, v, "a check has one criterion; this one has '" + c.criterion + "' and '" + key + "'");
             c.criterion = key;
             c.same_map_as = text(path, key, v);
-            if (!SchemeRegistry::instance().contains(c.same_map_as) || client_of(c.same_map_as) || plugin_of(c.same_map_as))
-                toml_error(path, v, "same_map_as = '" + c.same_map_as + "': not a built-in scheme");
+            if (!SchemeRegistry::instance().contains(c.same_map_as) || plugin_of(c.same_map_as))
+                toml_error(path, v, "same_map_as = '" + c.same_map_as + "': neither a built-in scheme nor a loaded client");
         } else if (std::find(criteria.begin(), criteria.end(), key) != criteria.end()) {
             if (!c.criterion.empty()) toml_error(path, v, "a check has one criterion; this one has '" + c.criterion + "' and '" + key + "'");
             c.criterion = key;

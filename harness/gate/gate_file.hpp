@@ -15,7 +15,8 @@
 //   except    = ["exact_splitting"]  # optional, with "*": schemes left out
 //   min_order = 0.8                # or max_error, max_energy_drift, max_momentum_drift,
 //                                  # min_stability, max_cost_ratio; or same_map_as = "richardson"
-//                                  # (clients whose counterpart it is: the same map to round-off)
+//                                  # (clients whose counterpart it is, a built-in or another
+//                                  # client: the same map to round-off)
 //   metric, dt, t_end, params, round_off, why   (optional)
 //
 //   [[expected_failure]]           # one check on one (scene, scheme) that is expected to fail
@@ -41,7 +42,7 @@ struct GateCheck {
     std::string criterion;  // min_order, max_error, max_energy_drift, max_momentum_drift, min_stability, max_cost_ratio,
                             // same_map_as
     double bound = 0;
-    std::string same_map_as;  // same_map_as: the built-in scheme every client of the check should equal
+    std::string same_map_as;  // same_map_as: the built-in scheme or client every client of the check should equal
     std::string metric;       // the metric the criterion reads
     std::vector<double> dts;  // empty: the scene's ladder (min_order)
     double t_end = 0;

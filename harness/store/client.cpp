@@ -157,9 +157,10 @@ std::string load_client(const std::string& path) {
         else if (key == "unsound_reason") notes = text(path, key, v);
         else if (key == "counterpart") {
             client.counterpart = text(path, key, v);
-            // Built-in only: the counterpart runs in this process, beside the client's replay.
-            if (!SchemeRegistry::instance().contains(client.counterpart) || client_of(client.counterpart) || plugin_of(client.counterpart))
-                toml_error(path, v, "counterpart '" + client.counterpart + "' is not a built-in scheme");
+            // A built-in runs in this process beside the client's replay; a client (another version of
+            // the same code) has its program run on the same scene.json. Never a plug-in.
+            if (!SchemeRegistry::instance().contains(client.counterpart) || plugin_of(client.counterpart))
+                toml_error(path, v, "counterpart '" + client.counterpart + "' is neither a built-in scheme nor a client loaded before this one (--client order)");
         } else if (key == "counterpart_note") {
             client.counterpart_note = text(path, key, v);
         } else {

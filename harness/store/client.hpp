@@ -12,7 +12,8 @@
 //   claims      = "no_squish"                        # a built-in scheme's claims, or a table [claims]
 //   sound       = false                              # optional: a code known to be wrong ...
 //   unsound_reason = "..."                           # ... and why (required with sound = false)
-//   counterpart = "no_squish"                        # optional: the built-in scheme it should equal ...
+//   counterpart = "no_squish"                        # optional: the built-in scheme it should equal, or a
+//                                                    # client loaded before it (another version of the code) ...
 //   counterpart_note = "..."                         # ... and, where it does not, why (for the report)
 //
 //   [claims]                                          # instead of claims = "id"; every key optional
