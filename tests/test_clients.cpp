@@ -373,6 +373,40 @@ TEST_CASE("clients: compare says when a client's program files changed between t
     fs::remove_all(dir);
 }
 
+TEST_CASE("clients: a descendant that leaves the program's process group (setsid) does not outlive the run") {
+    const fs::path dir = fresh_dir("client_setsid");
+    fs::create_directories(dir);
+    // The program forks; the child calls setsid and forks a grandchild that sleeps, writing its
+    // pid; the program waits for that pid and exits 1 (a failed run), its group killed as usual.
+    const fs::path pids = dir / "pids";
+    write(dir / "escape.py", "import os, sys, time\n"
+                             "if os.fork() == 0:\n"
+                             "    os.setsid()\n"
+                             "    if os.fork() == 0:\n"
+                             "        open(" + std::string("'") + pids.string() + "', 'a').write('%d\\n' % os.getpid())\n"
+                             "        time.sleep(120)\n"
+                             "    os._exit(0)\n"
+                             "while not os.path.exists('" + pids.string() + "'): time.sleep(0.01)\n"
+                             "time.sleep(0.1)\n"
+                             "sys.exit(1)\n");
+    write(dir / "escape.toml", "id = \"client_escape\"\nprogram = [\"python3\", \"" + (dir / "escape.py").string() +
+                                   "\"]\nscenes = [\"asymmetric_free\"]\nclaims = \"direct\"\n");
+    load_client((dir / "escape.toml").string());
+    const RunResult r = made({"asymmetric_free", "client_escape", 0.1, 0.0});
+    CHECK_THAT(r.failure, Catch::Contains("exited with status 1"));
+    REQUIRE(fs::exists(pids));
+    const pid_t escaped = std::stoi(read(pids));
+    // Killed: gone, or a zombie its new parent has not reaped yet; never still sleeping.
+    const auto alive = [&] {
+        const auto stat = read_file(fs::path("/proc") / std::to_string(escaped) / "stat");
+        return stat && stat->find(") Z ") == std::string::npos;
+    };
+    for (int i = 0; i < 100 && alive(); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(10));  // SIGKILL is delivered at once, reaped soon
+    CHECK_FALSE(alive());
+    if (alive()) ::kill(escaped, SIGKILL);
+    fs::remove_all(dir);
+}
+
 TEST_CASE("clients: two versions of one code side by side, the later one compared with the earlier as with a counterpart") {
     const fs::path dir = fresh_dir("client_versions");
     // Version 1 is richardson's map; version 2 the same code again; version 3 a change that keeps

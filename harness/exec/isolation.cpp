@@ -13,6 +13,8 @@
 #include "harness/scenes/scene.hpp"
 
 #include <algorithm>
+#include <atomic>
+#include <cctype>
 #include <cerrno>
 #include <chrono>
 #include <csignal>
@@ -24,6 +26,7 @@
 #include <sys/prctl.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
+#include <string_view>
 #include <unistd.h>
 
 namespace rotbench {
@@ -96,12 +99,56 @@ WorkerOutput run_worker(const std::vector<std::string>& verb_arguments, double s
 
 namespace {
 
-// A started program: its pid, which leads its own process group, and the read ends of its
-// standard output and error.
+// A started program: its pid, which leads its own process group, the read ends of its standard
+// output and error, and the mark its environment carries (RunMark) to every descendant.
 struct Child {
     pid_t pid = -1;
     int out = -1, err = -1;
+    std::string mark;
 };
+
+// ROTBENCH_RUN=<rotbench's pid>-<a count>, set in a started program's environment, which its
+// descendants inherit: one that leaves the program's process group (setsid, setpgid, as MPI
+// launchers and daemons do) is still found by it when the run ends, and killed.
+constexpr const char* run_mark_variable = "ROTBENCH_RUN";
+std::atomic<unsigned long> runs_started{0};
+
+// The environment a program starts with: rotbench's, with the run's mark.
+std::vector<std::string> marked_environment(const std::string& mark) {
+    std::vector<std::string> env;
+    const std::string prefix = std::string(run_mark_variable) + "=";
+    for (char** e = environ; e && *e; ++e)
+        if (std::string_view(*e).rfind(prefix, 0) != 0) env.emplace_back(*e);
+    env.push_back(prefix + mark);
+    return env;
+}
+
+// Kills every process of this user whose environment carries `mark`: what a program left behind
+// outside its group. Scanned again after each kill, since one may fork while the others die; a
+// zombie's environment reads empty, so the dead are not found twice.
+void kill_marked(const std::string& mark) {
+    const std::string needle = std::string(run_mark_variable) + "=" + mark;
+    for (int round = 0; round < 16; ++round) {
+        std::vector<pid_t> found;
+        std::error_code ec;
+        for (const auto& entry : std::filesystem::directory_iterator("/proc", ec)) {
+            const std::string name = entry.path().filename().string();
+            if (name.empty() || !std::all_of(name.begin(), name.end(), [](unsigned char c) { return std::isdigit(c); })) continue;
+            const auto environment = read_file(entry.path() / "environ");
+            if (!environment) continue;  // gone, or another user's
+            for (std::size_t begin = 0; begin < environment->size();) {
+                const std::size_t end = std::min(environment->find('\0', begin), environment->size());
+                if (environment->compare(begin, end - begin, needle) == 0) {
+                    found.push_back(static_cast<pid_t>(std::stol(name)));
+                    break;
+                }
+                begin = end + 1;
+            }
+        }
+        if (found.empty()) return;
+        for (pid_t pid : found) ::kill(pid, SIGKILL);
+    }
+}
 
 // args.front() as execv needs it: looked up on PATH here, as execvp would, or a relative path made
 // absolute (it is the caller's, not the folder the child starts in). Why not, or "".
@@ -126,6 +173,11 @@ std::string start_child(std::vector<std::string>& args, const std::string& direc
     std::vector<char*> argv;
     for (auto& a : args) argv.push_back(a.data());
     argv.push_back(nullptr);
+    const std::string mark = fmt::format("{}-{}", ::getpid(), runs_started++);
+    std::vector<std::string> environment = marked_environment(mark);
+    std::vector<char*> envp;
+    for (auto& e : environment) envp.push_back(e.data());
+    envp.push_back(nullptr);
     // started: closed by a successful exec (close-on-exec), or given the errno of the chdir or the
     // exec that failed, so that the reason is said rather than an exit status.
     int out[2], err[2], started[2];
@@ -171,7 +223,7 @@ std::string start_child(std::vector<std::string>& args, const std::string& direc
             ::_exit(127);
         };
         if (!directory.empty() && ::chdir(directory.c_str()) != 0) report(0);
-        ::execv(argv[0], argv.data());
+        ::execve(argv[0], argv.data(), envp.data());
         report(1);
     }
     ::close(out[1]);
@@ -195,7 +247,7 @@ std::string start_child(std::vector<std::string>& args, const std::string& direc
         return failed[0] == 0 ? fmt::format("could not enter the folder {} for its {}: {}", directory, what, std::strerror(failed[1]))
                               : fmt::format("could not start its {} '{}': {}", what, args.front(), std::strerror(failed[1]));
     }
-    child = {pid, out[0], err[0]};
+    child = {pid, out[0], err[0], mark};
     return "";
 }
 
@@ -264,6 +316,7 @@ WorkerOutput run_program(std::vector<std::string> args, const std::string& direc
     rusage usage{};
     while (::wait4(child.pid, &status, 0, &usage) < 0 && errno == EINTR) {
     }
+    kill_marked(child.mark);  // and what left the group
     result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     result.cpu_seconds = static_cast<double>(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
                          1e-6 * static_cast<double>(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
