@@ -216,6 +216,31 @@ TEST_CASE("granular client: stones handed back at the sample times give the prob
     fs::remove_all(dir);
 }
 
+TEST_CASE("granular client: a sample with no stone left is its time alone, which must be the time due") {
+    const fs::path dir = fresh_dir("granular_client_empty");
+    fs::create_directories(dir);
+    const SampledRun run = sampled_run();
+    // The last sample's rows replaced by its time alone: every stone gone by then.
+    const std::size_t last_row = run.csv.rfind('\n', run.csv.size() - 2) + 1;
+    const std::string last_t = run.csv.substr(last_row, run.csv.find(',', last_row) - last_row);
+    const std::size_t first_of_last = run.csv.find("\n" + last_t + ",") + 1;
+    const std::string emptied = run.csv.substr(0, first_of_last) + last_t + "\n";
+    const auto replayed = [&](const std::string& text, const std::string& id) {
+        write(dir / (id + ".csv"), text);
+        return made({"silo_discharge", copying_client(dir, id, dir / (id + ".csv")), silo_dt, 0.0, brief_silo});
+    };
+    const RunResult r = replayed(emptied, "copying_emptied");
+    INFO(r.failure);
+    CHECK(r.failure.empty());
+    CHECK(r.value("mass_left_end") == 0.0);
+    // The same sample left out altogether: the samples stop short, as before.
+    CHECK_THAT(replayed(run.csv.substr(0, first_of_last), "copying_cut").failure, Catch::Contains("stops before step"));
+    // Its time alone at another time than the one due.
+    CHECK_THAT(replayed(run.csv.substr(0, first_of_last) + "0.123\n", "copying_wrong_time").failure,
+               Catch::Contains("t = 0.123 where the next sample is due"));
+    fs::remove_all(dir);
+}
+
 TEST_CASE("granular client: LIGGGHTS runs rotbench's small silo from its spec, and refuses the seed's restitution of 0", "[slow]") {
     const std::string id = load_client(std::string(ROTBENCH_SOURCE_DIR) + "/examples/clients/liggghts/multisphere.toml");
     // LIGGGHTS 3.8.0 takes no restitution at or below 0.05: the adapter declines the run before it starts.

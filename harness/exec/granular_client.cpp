@@ -160,6 +160,15 @@ RunResult replay_granular_samples(const RunSpec& spec, GranularScene& scene, con
         for (std::size_t n = 2; std::getline(in, line); ++n) {
             if (in.eof()) return fail(fmt::format("{}:{}: the last line is cut short (no line break)", name, n));
             const std::string at = fmt::format("{}:{}", name, n);
+            if (line.find(',') == std::string::npos) {  // the time alone: a sample with no stone left
+                const double t = csv_number(line, at), due_t = static_cast<double>(step + (rows.empty() ? 0 : due.stride)) * spec.dt;
+                if (!rows.empty()) end_sample();
+                if (step > last) return fail(fmt::format("{}: a sample after the last one due (step {})", at, last));
+                if (!std::isfinite(t) || std::abs(t - due_t) > 1e-9 * std::max(1.0, due_t))
+                    return fail(fmt::format("{}: t = {} where the next sample is due at step {} (t = {})", at, line, step, due_t));
+                end_sample();
+                continue;
+            }
             Sample r;
             std::size_t c = 0, pos = 0;
             for (; c < r.size() && pos <= line.size(); ++c) {

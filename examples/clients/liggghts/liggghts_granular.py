@@ -183,6 +183,8 @@ def main(spec_path, out_path):
             bodies = {}
             for a in (r.split() for r in text if r.strip()):
                 bodies.setdefault(int(a[1]), []).append(a)
+            if not bodies:  # every stone has left the domain: the time alone
+                out.write(repr(step * dt) + "\n")
             for body in sorted(bodies):
                 atoms = sorted(bodies[body], key=lambda a: int(a[0]))
                 n = len(atoms)
