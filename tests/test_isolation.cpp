@@ -136,7 +136,7 @@ TEST_CASE("isolation: SIGINT, SIGTERM or SIGHUP stops a sweep whose plug-in hang
                   "asymmetric_free", "--dt", "0.05", "--run-timeout", "600", "--out", dir.c_str(), nullptr);
             _exit(127);
         }
-        while (!fs::exists(dir / "partial" / "command")) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+        while (!fs::exists(dir / "partial" / "runs.jsonl")) std::this_thread::sleep_for(std::chrono::milliseconds(5));
         const pid_t worker = child_of(pid);  // started, and hanging
         struct Reap {  // a failed check leaves neither hanging for ten minutes
             pid_t sweep, worker;

@@ -114,7 +114,7 @@ TEST_CASE("outputs: a second process writing into a directory in use is refused"
         execv(argv[0], argv.data());
         _exit(127);
     }
-    while (!fs::exists(dir / "partial" / "command")) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    while (!fs::exists(dir / "partial" / "runs.jsonl")) std::this_thread::sleep_for(std::chrono::milliseconds(5));
     const Cli second = cli(with(one_run, {"--out", dir.string(), "--overwrite"}));
     CHECK(second.status == 2);
     CHECK_THAT(second.err, Catch::Contains("is in use by another rotbench (process " + std::to_string(pid) + ")"));

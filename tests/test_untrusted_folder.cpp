@@ -106,13 +106,13 @@ TEST_CASE("untrusted folder: --resume runs only a sweep, never another command r
     const Victim victim("untrusted_resume_victim");
     const fs::path out = fresh_dir("untrusted_resume");
     fs::create_directories(out / "partial");
-    write(out / "partial" / "cwd", fs::current_path().string());
-    write(out / "partial" / "command",
-          "reference\n--scene\ndipole_top\n--samples\n3\n--out\n" + (victim.dir / "written").string() + "\n");
+    write(out / "partial" / "runs.jsonl", "{\"journal\": {\"command\": [\"reference\", \"--scene\", \"dipole_top\", \"--samples\", \"3\", "
+                                          "\"--out\", \"" + (victim.dir / "written").string() + "\"], \"cwd\": \"" +
+                                          fs::current_path().string() + "\", \"files\": []}}\n");
     const Cli resumed = cli({"run", "--resume", out.string()});
     CHECK(resumed.status == 2);
     CHECK(one_line(resumed.err));
-    CHECK_THAT(resumed.err, Catch::Contains("partial/command names 'reference', which is not a command rotbench resumes"));
+    CHECK_THAT(resumed.err, Catch::Contains("the journal, partial/runs.jsonl, names 'reference', which is not a command rotbench resumes"));
     CHECK(victim.intact());
     fs::remove_all(out);
 }

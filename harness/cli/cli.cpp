@@ -116,7 +116,7 @@ int run_cli_arguments(const std::vector<std::string>& arguments, std::ostream& o
         if (chosen == verbs.end()) throw InputError("no command given; valid commands: " + join(names, ", "));
         Verb& verb = *chosen->second.second;
         if (resuming && !verb.resumable())
-            throw InputError("--resume " + resuming->string() + ": partial/command names '" + chosen->first +
+            throw InputError("--resume " + resuming->string() + ": the journal, partial/runs.jsonl, names '" + chosen->first +
                              "', which is not a command rotbench resumes; the folder's bookkeeping was changed by something else");
         const bool internal = internal_verb(chosen->first);
         const auto load = [&] {

@@ -76,7 +76,7 @@ int resume(const CLI::App& run_cmd, const std::string& dir, std::ostream& out, s
         for (const auto* option : command->get_options())
             if (option->count() > 0 && option->get_name() != "--resume")
                 throw InputError(option->get_name() + ": --resume DIR takes no other option; the sweep's are read from " +
-                                 (std::filesystem::path(dir) / "partial" / "command").string());
+                                 (std::filesystem::path(dir) / "partial" / "runs.jsonl").string());
     const auto absolute = std::filesystem::absolute(dir);
     const auto arguments = Journal::arguments(absolute);
     const auto here = std::filesystem::current_path();
@@ -123,7 +123,7 @@ public:
     int run(const Invocation& how) override {
         if (!options_.resume.empty()) {
             if (how.resuming)
-                throw InputError("--resume: " + (*how.resuming / "partial" / "command").string() + " holds --resume itself");
+                throw InputError("--resume: " + (*how.resuming / "partial" / "runs.jsonl").string() + " holds --resume itself");
             return resume(*command_, options_.resume, how.out, how.err);
         }
         return run_sweep_command(options_, how);

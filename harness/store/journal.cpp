@@ -6,41 +6,63 @@
 #include "harness/store/output_files.hpp"
 #include "harness/store/run_record.hpp"
 
+#include <algorithm>
 #include <fmt/format.h>
-#include <sstream>
-#include <stdexcept>
+#include <nlohmann/json.hpp>
 
 namespace rotbench {
 namespace fs = std::filesystem;
 
 namespace {
 
-fs::path journal_dir(const fs::path& out_dir) { return out_dir / "partial"; }
+using json = nlohmann::json;
 
-bool journal_exists(const fs::path& out_dir) { return fs::exists(journal_dir(out_dir) / "command"); }
+fs::path journal_file(const fs::path& out_dir) { return out_dir / "partial" / "runs.jsonl"; }
 
-std::string read_text(const fs::path& path) { return read_input_file(path, "cannot read"); }
-
-std::string plugins_text() {
-    std::string text;
-    for (const auto& p : loaded_plugins()) text += p.hash + "\t" + p.path + "\n";
-    for (const auto& c : loaded_clients()) text += c.hash + "\t" + c.path + "\n";
-    return text;
+// The plug-ins and client files loaded now, each with its hash: a changed one is another scheme.
+json loaded_files() {
+    json files = json::array();
+    for (const auto& p : loaded_plugins()) files.push_back({p.hash, p.path});
+    for (const auto& c : loaded_clients()) files.push_back({c.hash, c.path});
+    return files;
 }
 
-// The records of the runs file that are whole, and the length they span: a kill while a
-// record was being appended leaves a cut one at the end, which is dropped (and cut off
-// the file when the run is resumed).
+// The journal's first line, what the command was: {"journal": {"command": [...], "cwd": "...",
+// "files": [[hash, path], ...]}}. InputError naming the file when there is none, or it is not one.
+struct Header {
+    json fields;
+    std::size_t length = 0;  // with its line break
+};
+Header read_header(const fs::path& out_dir) {
+    const fs::path file = journal_file(out_dir);
+    if (!fs::exists(fs::symlink_status(file)))
+        throw InputError("--resume " + out_dir.string() + ": no interrupted run there (no partial/runs.jsonl)");
+    std::ifstream in = open_input_stream(file, "the journal");
+    std::string line;
+    const bool whole = static_cast<bool>(std::getline(in, line)) && !in.eof();
+    const json j = whole ? json::parse(line, nullptr, false) : json();
+    const bool valid = j.is_object() && j.contains("journal") && j["journal"].is_object() && j["journal"].contains("command") &&
+                       j["journal"]["command"].is_array() && j["journal"].contains("cwd") && j["journal"]["cwd"].is_string() &&
+                       j["journal"].contains("files") && j["journal"]["files"].is_array() &&
+                       std::all_of(j["journal"]["command"].begin(), j["journal"]["command"].end(), [](const json& a) { return a.is_string(); });
+    if (!valid) throw InputError(file.string() + ":1: not the journal of a rotbench command; the folder's bookkeeping was changed by something else");
+    return {j["journal"], line.size() + 1};
+}
+
+// The runs recorded after the header, and the bytes their whole records span from its end: a
+// kill while a record was being appended leaves a cut one at the end, which is dropped (and cut
+// off the file when the command is resumed).
 struct Records {
     std::map<RunSpec, RunResult> runs;
     std::size_t count = 0, whole_length = 0;
 };
-
-Records read_records(const fs::path& file) {
-    Records found;
-    if (!fs::exists(file)) return found;
+Records read_records(const fs::path& out_dir) {
+    const Header header = read_header(out_dir);
+    const fs::path file = journal_file(out_dir);
     std::ifstream in = open_input_stream(file, "the journal");
+    in.seekg(static_cast<std::streamoff>(header.length));
     RunRecords records = parse_run_records(in, file.string());
+    Records found;
     for (auto& [index, run] : records.runs) {
         const RunSpec key = run.spec;
         if (!found.runs.emplace(key, std::move(run)).second)
@@ -48,67 +70,52 @@ Records read_records(const fs::path& file) {
                                          key.scheme, kind_name(key.kind), format_number(key.dt)));
     }
     found.count = records.runs.size();
-    found.whole_length = records.whole_length;
+    found.whole_length = header.length + records.whole_length;
     return found;
 }
 
 }  // namespace
 
 Journal Journal::start(const OutputDir& out, const std::vector<std::string>& arguments) {
-    std::string command;
-    for (const auto& a : arguments) {
+    for (const auto& a : arguments)
         if (a.find('\n') != std::string::npos) throw InputError("an argument holds a line break");  // the CLI refuses them first
-        command += a + "\n";
-    }
-    out.claim("partial/runs.jsonl");
-    out.write("partial/plugins", plugins_text());
-    out.write("partial/cwd", fs::current_path().string());
-    out.write("partial/command", command);  // last: its presence marks a journal
+    const json header = {{"journal", {{"command", arguments}, {"cwd", fs::current_path().string()}, {"files", loaded_files()}}}};
+    out.write("partial/runs.jsonl", header.dump(-1, ' ', false, json::error_handler_t::replace) + "\n");
     return Journal(out, 0);
 }
 
 Journal Journal::reopen(const OutputDir& out) {
-    const fs::path out_dir = out.path(), dir = journal_dir(out_dir);
-    if (!journal_exists(out_dir)) throw InputError("--resume " + out_dir.string() + ": no interrupted run there (no partial/command)");
-    if (fs::exists(dir / "plugins") && read_text(dir / "plugins") != plugins_text())
+    const fs::path out_dir = out.path();
+    if (read_header(out_dir).fields.at("files") != loaded_files())
         throw InputError("--resume " + out_dir.string() +
                          ": a plug-in or client file has changed since the run was interrupted "
-                         "(partial/plugins names each with its hash); run it again with --overwrite");
+                         "(partial/runs.jsonl names each with its hash); run it again with --overwrite");
     // A record cut short by a kill would sit between the runs appended from now on: cut it off.
     const fs::path runs = out.claim("partial/runs.jsonl");
-    std::size_t count = 0;
-    if (fs::exists(runs)) {
-        const Records found = read_records(runs);
-        if (found.whole_length != fs::file_size(runs)) fs::resize_file(runs, found.whole_length);
-        count = found.count;
-    }
-    return Journal(out, count);
+    const Records found = read_records(out_dir);
+    if (found.whole_length != fs::file_size(runs)) fs::resize_file(runs, found.whole_length);
+    return Journal(out, found.count);
 }
 
 std::vector<std::string> Journal::arguments(const fs::path& out_dir) {
-    if (!journal_exists(out_dir)) throw InputError("--resume " + out_dir.string() + ": no interrupted run there (no partial/command)");
-    auto lines = split_on(read_text(journal_dir(out_dir) / "command"), '\n');
-    lines.pop_back();  // after the last line break
-    return lines;
+    return read_header(out_dir).fields.at("command").get<std::vector<std::string>>();
 }
 
 fs::path Journal::working_directory(const fs::path& out_dir) {
-    const fs::path cwd = read_text(journal_dir(out_dir) / "cwd");
+    const fs::path cwd = read_header(out_dir).fields.at("cwd").get<std::string>();
     if (!fs::is_directory(cwd))
         throw InputError("--resume " + out_dir.string() + ": the run was started in " + cwd.string() + ", which is gone");
     return cwd;
 }
 
-std::map<RunSpec, RunResult> Journal::finished() const { return read_records(journal_dir(out_.path()) / "runs.jsonl").runs; }
+std::map<RunSpec, RunResult> Journal::finished() const { return read_records(out_.path()).runs; }
 
-void Journal::record(const RunResult& result) const {
-    append_to_file(journal_dir(out_.path()) / "runs.jsonl", run_record((*records_)++, result));
-}
+void Journal::record(const RunResult& result) const { append_to_file(journal_file(out_.path()), run_record((*records_)++, result)); }
 
 void Journal::discard(const fs::path& out_dir) {
     std::error_code ec;
-    for (const char* f : {"command", "runs.jsonl", "cwd", "plugins"}) fs::remove(journal_dir(out_dir) / f, ec);
-    fs::remove(journal_dir(out_dir), ec);  // when empty
+    fs::remove(journal_file(out_dir), ec);
+    fs::remove(out_dir / "partial", ec);  // when empty
 }
 
 }  // namespace rotbench

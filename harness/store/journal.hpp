@@ -1,13 +1,13 @@
 // The runs of a command finished so far, kept on disk as they finish so that a kill or a
 // signal loses at most the runs in flight; `--resume DIR` reads them back and the command
 // makes only the rest. A run is found again by its key (RunSpec), so a command whose runs
-// depend on earlier ones (advise) is resumed as simply as a fixed plan. Layout, under DIR/partial:
-//   runs.jsonl  the finished runs, one record each (harness/store/run_record.hpp), appended as
-//               they finish; a record's index counts the records
-//   plugins     the plug-ins loaded, each with the hash of its file (a changed one is refused on resume)
-//   cwd         the directory it was started in (relative paths in the arguments are from there)
-//   command     the arguments of the command, one per line (what --resume runs again); written
-//               last, its presence marks a journal
+// depend on earlier ones (advise) is resumed as simply as a fixed plan. One file, DIR/partial/runs.jsonl:
+//   its first line  what the command was: {"journal": {"command": [its arguments], "cwd": the
+//                   directory it was started in (relative paths in the arguments are from
+//                   there), "files": [[hash, path] of each plug-in and client file loaded]}};
+//                   written whole before any run, its presence marks a journal
+//   then            the finished runs, one record each (harness/store/run_record.hpp), appended
+//                   as they finish; a record's index counts the records
 // A record is appended by one write in append mode; only a kill in the middle of one can
 // leave it cut short, at the end of the file, and a cut record counts as not finished.
 // (One file for all runs: a directory of files per run made the file system allocate
@@ -29,10 +29,10 @@ namespace rotbench {
 
 class Journal {
 public:
-    // A new journal in out/partial, the plug-ins loaded now named by their hashes.
+    // A new journal in out/partial, the plug-ins and client files loaded now named by their hashes.
     static Journal start(const OutputDir& out, const std::vector<std::string>& arguments);
-    // The journal of an interrupted command. InputError when out has none, or when a plug-in
-    // it ran has changed since (another hash).
+    // The journal of an interrupted command. InputError when out has none, or when a plug-in or
+    // client file it ran has changed since (another hash).
     static Journal reopen(const OutputDir& out);
     // The arguments the interrupted command was given. InputError when out_dir has no journal.
     static std::vector<std::string> arguments(const std::filesystem::path& out_dir);

@@ -96,13 +96,13 @@ Manifest refuse_what_is_in_the_way(const fs::path& dir, const OutputDir::Request
     std::error_code ec;
     refuse_links(dir, fs::path(meta) / "lock");
     for (const char* sub : subfolders) refuse_links(dir, sub);
-    refuse_links(dir, "partial/command");
+    refuse_links(dir, "partial/runs.jsonl");
     const bool ours = fs::exists(manifest_path(dir), ec);
     if (!empty_directory(dir) && !ours && !r.overwrite)
         throw InputError("--out " + name + " holds files rotbench did not write; choose another directory, or pass --overwrite to "
                          "write beside them (none of them is replaced)");
     Manifest manifest = ours ? read_manifest(dir) : Manifest{};
-    if (!r.resuming && fs::exists(dir / "partial" / "command", ec) && !r.overwrite)
+    if (!r.resuming && fs::exists(dir / "partial" / "runs.jsonl", ec) && !r.overwrite)
         throw InputError("--out " + name + " holds an interrupted run; rotbench run --resume " + name +
                          " finishes it, --overwrite starts again");
     if (!r.marker.empty() && !r.overwrite && !r.resuming && fs::exists(dir / r.marker, ec))

@@ -46,8 +46,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     put(beside, "keep me\n");
     put(out / ".rotbench" / "manifest", manifest);
     put(out / ".rotbench" / "lock", lock);
-    put(out / "partial" / "command", "run\n");
-    put(out / "partial" / "runs.jsonl", journal);
+    put(out / "partial" / "runs.jsonl", "{\"journal\": {\"command\": [\"run\"], \"cwd\": \"/\", \"files\": []}}\n" + journal);
     for (const bool resuming : {true, false}) {
         fuzz::parse_or_input_error([&] {
             const OutputDir dir = OutputDir::open(out, {"run", "results.csv", {"results.csv", "runs.jsonl"}, !resuming, resuming});
