@@ -16,7 +16,9 @@ std::string clients_section(const std::vector<CounterpartVerdict>& verdicts) {
     md += "|---|---|---|---|---|---|---|---|\n";
     for (const auto& v : verdicts) {
         std::string map = "the same, to round-off";
-        if (!v.same_map) {
+        if (std::isnan(CounterpartVerdict::relative(*v.coarse)) || std::isnan(CounterpartVerdict::relative(*v.fine))) {
+            map = "not compared: its counterpart's run gave no trajectory (a client counterpart whose program failed)";
+        } else if (!v.same_map) {
             map = "another map";
             if (std::isfinite(v.order)) map += fmt::format(": the difference falls as dt^{:.2f}", v.order);
             map += v.note.empty() ? " (not explained by its client file)" : ". " + v.note;

@@ -424,6 +424,14 @@ TEST_CASE("clients: two versions of one code side by side, the later one compare
     const std::string report = read(dir / "run" / "report.md");
     CHECK(std::regex_search(report, std::regex(R"(\| `code_v2` \| `code_v1` \| `asymmetric_free` \| 0 \(dt 0.05\) \| 0 \| 0.0125 \| 0 \| the same, to round-off \|)")));
     CHECK(std::regex_search(report, std::regex(R"(\| `code_v3` \| `code_v1` \| `asymmetric_free` \| [0-9.e-]+ \(dt 0.05\) .*\| another map: the difference falls as dt\^2\.)")));
+    // A counterpart client whose program fails: said, not taken for another map.
+    const fs::path broken = client_file(dir, "code_broken", "richardson", "--crash", "claims = \"richardson\"\n");
+    const fs::path v4 = client_file(dir, "code_v4", "richardson", "", "claims = \"richardson\"\ncounterpart = \"code_broken\"\n");
+    const Cli against_broken = cli({"--client", broken.string(), "--client", v4.string(), "run", "--scenes", "asymmetric_free", "--schemes",
+                                    "code_v4", "--dt", "0.05,0.025", "--out", (dir / "broken").string()});
+    REQUIRE(against_broken.status == 0);
+    CHECK_THAT(read(dir / "broken" / "report.md"), Catch::Contains("| `code_v4` | `code_broken` | `asymmetric_free` | nan") &&
+                                                       Catch::Contains("not compared: its counterpart's run gave no trajectory"));
     // The same in a gate: same_map_as may name a client.
     write(dir / "gate.toml", "[[check]]\nscene = \"asymmetric_free\"\nschemes = [\"code_v2\", \"code_v3\"]\nsame_map_as = \"code_v1\"\n"
                              "dt = [0.05]\n");
