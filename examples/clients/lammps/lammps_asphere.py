@@ -78,7 +78,11 @@ lines += ["fix body all nve/asphere", "timestep %s" % g(dt), "thermo 0",
           "dump d all custom 1 body.dump c_q[1] c_q[2] c_q[3] c_q[4] angmomx angmomy angmomz",
           "dump_modify d format float %.17g", "run %d" % spec["steps"]]
 open("in.rotbench", "w").write("\n".join(lines) + "\n")
-subprocess.run(["lmp", "-in", "in.rotbench", "-log", "none", "-screen", "none", "-nocite"], check=True)
+lammps = subprocess.run(["lmp", "-in", "in.rotbench", "-log", "none", "-nocite"], stderr=subprocess.PIPE,
+                        stdout=subprocess.PIPE, text=True)
+if lammps.returncode != 0:  # its own last words: MPI's and LAMMPS's errors, on the last line rotbench shows
+    said = [line.strip() for line in (lammps.stdout + lammps.stderr).splitlines() if line.strip()]
+    sys.exit("lmp exited with status %d: %s" % (lammps.returncode, " | ".join(said[-3:]) or "nothing said"))
 
 with open("body.dump") as dump, open(out_path, "w") as out:
     out.write(spec["columns"] + "\n")
