@@ -20,11 +20,10 @@ only; everything is written in the current directory (rotbench's scratch directo
 import json
 import math
 import os
-import subprocess
 import sys
 
 sys.dont_write_bytecode = True  # nothing left beside the adapter
-from asphere_torque import matvec, rot, torque_of
+from lammps_common import matvec, rot, run_lmp, torque_of
 
 spec_path, out_path = sys.argv[1], sys.argv[2]
 spec = json.load(open(spec_path))
@@ -54,7 +53,7 @@ with open("torque.py", "w") as f:  # the callback: reads q, adds T(q) to the tor
     f.write("import ctypes, json, sys\n"
             "sys.dont_write_bytecode = True\n"
             "sys.path.insert(0, %r)\n" % here +
-            "from asphere_torque import torque_of\n"
+            "from lammps_common import torque_of\n"
             "law = json.loads(%r)\n" % json.dumps(law) +
             "lib = ctypes.CDLL('liblammps.so.0')\n"
             "lib.lammps_extract_atom.restype = ctypes.POINTER(ctypes.POINTER(ctypes.c_double))\n"
@@ -78,11 +77,7 @@ lines += ["fix body all nve/asphere", "timestep %s" % g(dt), "thermo 0",
           "dump d all custom 1 body.dump c_q[1] c_q[2] c_q[3] c_q[4] angmomx angmomy angmomz",
           "dump_modify d format float %.17g", "run %d" % spec["steps"]]
 open("in.rotbench", "w").write("\n".join(lines) + "\n")
-lammps = subprocess.run(["lmp", "-in", "in.rotbench", "-log", "none", "-nocite"], stderr=subprocess.PIPE,
-                        stdout=subprocess.PIPE, text=True)
-if lammps.returncode != 0:  # its own last words: MPI's and LAMMPS's errors, on the last line rotbench shows
-    said = [line.strip() for line in (lammps.stdout + lammps.stderr).splitlines() if line.strip()]
-    sys.exit("lmp exited with status %d: %s" % (lammps.returncode, " | ".join(said[-3:]) or "nothing said"))
+run_lmp("in.rotbench")
 
 with open("body.dump") as dump, open(out_path, "w") as out:
     out.write(spec["columns"] + "\n")

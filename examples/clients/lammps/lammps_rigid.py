@@ -16,27 +16,14 @@ everything is written in the current directory (rotbench's scratch directory).
 """
 import json
 import math
-import subprocess
 import sys
+
+sys.dont_write_bytecode = True  # nothing left beside the adapter
+from lammps_common import cross, matvec, rot, run_lmp
 
 style, spec_path, out_path = sys.argv[1], sys.argv[2], sys.argv[3]
 spec = json.load(open(spec_path))
 A = 1.0  # marker distance (m): round-off of the read-back orientation is eps relative to it
-
-
-def rot(q):  # body -> world rotation matrix of a unit quaternion (w, x, y, z)
-    w, x, y, z = q
-    return [[1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
-            [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
-            [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)]]
-
-
-def matvec(m, v):
-    return [sum(m[i][j] * v[j] for j in range(3)) for i in range(3)]
-
-
-def cross(a, b):
-    return [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
 
 
 def quat(m):  # rotation matrix -> unit quaternion, w first (Shepperd's method)
@@ -111,11 +98,7 @@ lines += ["timestep %s" % g(spec["dt"]), "thermo 0",
           "dump d all custom 1 markers.dump id x y z vx vy vz",
           'dump_modify d sort id format float %.17g', "run %d" % spec["steps"]]
 open("in.rotbench", "w").write("\n".join(lines) + "\n")
-lammps = subprocess.run(["lmp", "-in", "in.rotbench", "-log", "none", "-nocite"], stderr=subprocess.PIPE,
-                        stdout=subprocess.PIPE, text=True)
-if lammps.returncode != 0:  # its own last words: MPI's and LAMMPS's errors, on the last line rotbench shows
-    said = [line.strip() for line in (lammps.stdout + lammps.stderr).splitlines() if line.strip()]
-    sys.exit("lmp exited with status %d: %s" % (lammps.returncode, " | ".join(said[-3:]) or "nothing said"))
+run_lmp("in.rotbench")
 
 with open("markers.dump") as dump, open(out_path, "w") as out:
     out.write(spec["columns"] + "\n")

@@ -1,5 +1,7 @@
-"""The torque of a rotbench scene at an orientation, for lammps_asphere.py and the callback it
-hands LAMMPS (docs/clients.md). Python 3 stdlib only."""
+"""What the LAMMPS adapters share (docs/clients.md): rotations, a scene's torque at an orientation
+(also for the callback lammps_asphere.py hands LAMMPS), and running `lmp`. Python 3 stdlib only."""
+import subprocess
+import sys
 
 
 def rot(q):  # body -> world rotation matrix of a unit quaternion (w, x, y, z)
@@ -23,3 +25,10 @@ def torque_of(q, law):  # the scene's torque (scene.json's "torque") at orientat
     if law["law"] == "body_constant":
         return matvec(rot(q), law["torque_body"])
     return [0.0, 0.0, 0.0]
+
+
+def run_lmp(script):  # runs lmp on the input file; on failure exits with its last words (MPI's and LAMMPS's errors)
+    lammps = subprocess.run(["lmp", "-in", script, "-log", "none", "-nocite"], stderr=subprocess.PIPE, stdout=subprocess.PIPE, text=True)
+    if lammps.returncode != 0:
+        said = [line.strip() for line in (lammps.stdout + lammps.stderr).splitlines() if line.strip()]
+        sys.exit("lmp exited with status %d: %s" % (lammps.returncode, " | ".join(said[-3:]) or "nothing said"))
