@@ -100,7 +100,7 @@ WorkerOutput run_worker(const std::vector<std::string>& verb_arguments, double s
 namespace {
 
 // A started program: its pid, which leads its own process group, the read ends of its standard
-// output and error, and the mark its environment carries (RunMark) to every descendant.
+// output and error, and the mark its environment carries to every descendant (run_mark_variable).
 struct Child {
     pid_t pid = -1;
     int out = -1, err = -1;
