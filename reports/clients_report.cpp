@@ -17,7 +17,8 @@ std::string clients_section(const std::vector<CounterpartVerdict>& verdicts) {
     for (const auto& v : verdicts) {
         std::string map = "the same, to round-off";
         if (std::isnan(CounterpartVerdict::relative(*v.coarse)) || std::isnan(CounterpartVerdict::relative(*v.fine))) {
-            map = "not compared: its counterpart's run gave no trajectory (a client counterpart whose program failed)";
+            map = "not compared: its counterpart gave no trajectory here (a client counterpart that failed, declined or does not take "
+                  "the scene)";
         } else if (!v.same_map) {
             map = "another map";
             if (std::isfinite(v.order)) map += fmt::format(": the difference falls as dt^{:.2f}", v.order);

@@ -431,7 +431,18 @@ TEST_CASE("clients: two versions of one code side by side, the later one compare
                                     "code_v4", "--dt", "0.05,0.025", "--out", (dir / "broken").string()});
     REQUIRE(against_broken.status == 0);
     CHECK_THAT(read(dir / "broken" / "report.md"), Catch::Contains("| `code_v4` | `code_broken` | `asymmetric_free` | nan") &&
-                                                       Catch::Contains("not compared: its counterpart's run gave no trajectory"));
+                                                       Catch::Contains("not compared: its counterpart gave no trajectory here"));
+    // Nor does one whose file does not take the scene: its program is never run there.
+    const fs::path narrow = client_file(dir, "code_narrow", "richardson", "", "claims = \"richardson\"\n");
+    std::string text = read(narrow);
+    text.replace(text.find("scenes = ["), text.find('\n', text.find("scenes = [")) - text.find("scenes = ["), "scenes = [\"asymmetric_free\"]");
+    write(narrow, text);
+    const fs::path v5 = client_file(dir, "code_v5", "richardson", "", "claims = \"richardson\"\ncounterpart = \"code_narrow\"\n");
+    REQUIRE(cli({"--client", narrow.string(), "--client", v5.string(), "run", "--scenes", "dipole_top", "--schemes", "code_v5", "--dt",
+                 "0.01,0.005", "--out", (dir / "narrow").string()})
+                .status == 0);
+    CHECK_THAT(read(dir / "narrow" / "report.md"), Catch::Contains("| `code_v5` | `code_narrow` | `dipole_top` | nan") &&
+                                                       Catch::Contains("not compared: its counterpart gave no trajectory here"));
     // The same in a gate: same_map_as may name a client.
     write(dir / "gate.toml", "[[check]]\nscene = \"asymmetric_free\"\nschemes = [\"code_v2\", \"code_v3\"]\nsame_map_as = \"code_v1\"\n"
                              "dt = [0.05]\n");

@@ -227,6 +227,10 @@ RunResult run_client(const RunSpec& requested, const RunOptions& options, const 
         // Another client (another version of the same code): its program on the same scene.json.
         std::vector<Row> other;
         if (const LoadedClient* counterpart = client_of(client.counterpart)) {
+            if (!why_not_taken(counterpart->id, requested.scene).empty()) {  // not its scene: nothing to compare with
+                add_counterpart_difference(result, rows, other);
+                return timed(std::move(result));
+            }
             const WorkerOutput their = run_in_scratch(*counterpart, scene_json, output, seconds, megabytes, [&](const fs::path& file) {
                 if (!read_rows(file, steps, requested.dt, other).empty()) other.clear();
             });
