@@ -235,6 +235,8 @@ TEST_CASE("granular client: a sample with no stone left is its time alone, which
     CHECK(r.value("mass_left_end") == 0.0);
     // The same sample left out altogether: the samples stop short, as before.
     CHECK_THAT(replayed(run.csv.substr(0, first_of_last), "copying_cut").failure, Catch::Contains("stops before step"));
+    // Its time alone after rows of the same sample.
+    CHECK_THAT(replayed(run.csv + last_t + "\n", "copying_both").failure, Catch::Contains("the time alone of a sample that has stones"));
     // Its time alone at another time than the one due.
     CHECK_THAT(replayed(run.csv.substr(0, first_of_last) + "0.123\n", "copying_wrong_time").failure,
                Catch::Contains("t = 0.123 where the next sample is due"));

@@ -160,24 +160,16 @@ RunResult replay_granular_samples(const RunSpec& spec, GranularScene& scene, con
         for (std::size_t n = 2; std::getline(in, line); ++n) {
             if (in.eof()) return fail(fmt::format("{}:{}: the last line is cut short (no line break)", name, n));
             const std::string at = fmt::format("{}:{}", name, n);
-            if (line.find(',') == std::string::npos) {  // the time alone: a sample with no stone left
-                const double t = csv_number(line, at), due_t = static_cast<double>(step + (rows.empty() ? 0 : due.stride)) * spec.dt;
-                if (!rows.empty()) end_sample();
-                if (step > last) return fail(fmt::format("{}: a sample after the last one due (step {})", at, last));
-                if (!std::isfinite(t) || std::abs(t - due_t) > 1e-9 * std::max(1.0, due_t))
-                    return fail(fmt::format("{}: t = {} where the next sample is due at step {} (t = {})", at, line, step, due_t));
-                end_sample();
-                continue;
-            }
+            const bool alone = line.find(',') == std::string::npos;  // the time alone: a sample with no stone left
             Sample r;
             std::size_t c = 0, pos = 0;
-            for (; c < r.size() && pos <= line.size(); ++c) {
+            for (; c < (alone ? 1 : r.size()) && pos <= line.size(); ++c) {
                 const std::size_t comma = std::min(line.find(',', pos), line.size());
                 r[c] = csv_number(line.substr(pos, comma - pos), at);
                 if (!std::isfinite(r[c])) return fail(fmt::format("{}: a value that is not finite", at));
                 pos = comma + 1;
             }
-            if (c != r.size() || pos != line.size() + 1) return fail(fmt::format("{}: {} fields are due", at, r.size()));
+            if ((!alone && c != r.size()) || pos != line.size() + 1) return fail(fmt::format("{}: {} fields are due", at, r.size()));
             // A row of the next sample ends this one.
             const double t = static_cast<double>(step) * spec.dt;
             if (!rows.empty() && std::abs(r[0] - t) > 1e-9 * std::max(1.0, t)) end_sample();
@@ -185,6 +177,11 @@ RunResult replay_granular_samples(const RunSpec& spec, GranularScene& scene, con
             const double due_t = static_cast<double>(step) * spec.dt;
             if (std::abs(r[0] - due_t) > 1e-9 * std::max(1.0, due_t))
                 return fail(fmt::format("{}: t = {} where the next sample is due at step {} (t = {})", at, r[0], step, due_t));
+            if (alone && !rows.empty()) return fail(fmt::format("{}: the time alone of a sample that has stones", at));
+            if (alone) {
+                end_sample();
+                continue;
+            }
             const double stone = r[1], shape = r[2];
             if (stone < 0 || stone >= static_cast<double>(count) || stone != std::floor(stone) || seen[static_cast<std::size_t>(stone)])
                 return fail(fmt::format("{}: stone {} is not one of 0 ... {} once in its sample", at, stone, count - 1));

@@ -150,6 +150,14 @@ void kill_marked(const std::string& mark) {
     }
 }
 
+// The null-terminated array of C strings execve takes, pointing into `strings`.
+std::vector<char*> c_strings(std::vector<std::string>& strings) {
+    std::vector<char*> pointers;
+    for (auto& text : strings) pointers.push_back(text.data());
+    pointers.push_back(nullptr);
+    return pointers;
+}
+
 // args.front() as execv needs it: looked up on PATH here, as execvp would, or a relative path made
 // absolute (it is the caller's, not the folder the child starts in). Why not, or "".
 std::string resolve_program(std::vector<std::string>& args, const std::string& what) {
@@ -170,14 +178,9 @@ std::string resolve_program(std::vector<std::string>& args, const std::string& w
 std::string start_child(std::vector<std::string>& args, const std::string& directory, std::size_t megabytes, const std::string& what,
                         Child& child) {
     // Everything the child needs is built before fork: after it, only chdir and exec.
-    std::vector<char*> argv;
-    for (auto& a : args) argv.push_back(a.data());
-    argv.push_back(nullptr);
     const std::string mark = fmt::format("{}-{}", ::getpid(), runs_started++);
     std::vector<std::string> environment = marked_environment(mark);
-    std::vector<char*> envp;
-    for (auto& e : environment) envp.push_back(e.data());
-    envp.push_back(nullptr);
+    const std::vector<char*> argv = c_strings(args), envp = c_strings(environment);
     // started: closed by a successful exec (close-on-exec), or given the errno of the chdir or the
     // exec that failed, so that the reason is said rather than an exit status.
     int out[2], err[2], started[2];
