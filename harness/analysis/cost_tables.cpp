@@ -5,7 +5,6 @@
 #include "harness/store/parse.hpp"
 
 #include <cmath>
-#include <set>
 
 namespace rotbench {
 
@@ -22,7 +21,6 @@ std::optional<CostTable> read_cost_table(const std::filesystem::path& dir) {
     CostTable table;
     if (records.empty()) return table;
     const std::vector<std::string>& header = records.front().fields;
-    const std::set<std::string> text_columns = {"scheme", "public", "mode", "failure"};
     for (auto record = records.begin() + 1; record != records.end(); ++record) {
         if (record->size() == 1 && (*record)[0].empty()) continue;  // a blank line
         CostRow row;

@@ -99,8 +99,8 @@ int run_cli_arguments(const std::vector<std::string>& arguments, std::ostream& o
     std::string command_line = "rotbench";
     for (int i = 1; i < argc; ++i) command_line += std::string(" ") + argv[i];
     try {
-        // The journal keeps the arguments one per line (for --resume), and every message is
-        // one line: an argument with a line break is refused before anything is written.
+        // Every message and the command line a report quotes are one line: an argument with a
+        // line break is refused before anything is written.
         for (const auto& a : arguments)
             if (a.find_first_of("\n\r") != std::string::npos)
                 throw InputError("an argument holds a line break: '" + a + "'; rotbench takes none");  // shown as \x0A

@@ -73,7 +73,7 @@ public:
         command.add_option("--results", results_, "DIR: judge the runs in DIR (e.g. merged shards) instead of running them");
         command.add_option("--baseline", baseline_, "DIR: also fail on regressions against the runs in DIR (as rotbench compare)");
         command.add_option("--shard", shard_, "K/N: run only the K-th of N slices of the gate's runs (judge the merge with --results)");
-        command.add_flag("--quick", quick_, "each scene's short ladder of time steps where the file gives none (a CI step in minutes)");
+        command.add_flag("--quick", quick_, "fit each ladder the file leaves to the scene on its three finest steps (fewer runs, for CI)");
         command.add_option("--schemes", schemes_, "comma list of scheme ids: gate only these (default: all the file names)");
         command.add_option("--jobs", jobs_, "runs in parallel (results do not depend on it)")->check(CLI::Range(1, max_jobs));
         isolation_.add_to(command);

@@ -224,17 +224,16 @@ RunResult run_client(const RunSpec& requested, const RunOptions& options, const 
     if (requested.kind == RunKind::horizon) return timed(run_horizon(requested, replay));
     RunResult result = run_trajectory(requested, {.measure_time = false, .series_samples = options.series_samples}, replay);
     if (!client.counterpart.empty() && result.failure.empty()) {
-        // Another client (another version of the same code): its program on the same scene.json.
+        // Another client (another version of the same code): its program on the same scene.json, on
+        // a scene its file takes; elsewhere nothing to compare with.
         std::vector<Row> other;
         if (const LoadedClient* counterpart = client_of(client.counterpart)) {
-            if (!why_not_taken(counterpart->id, requested.scene).empty()) {  // not its scene: nothing to compare with
-                add_counterpart_difference(result, rows, other);
-                return timed(std::move(result));
+            if (why_not_taken(counterpart->id, requested.scene).empty()) {
+                const WorkerOutput their = run_in_scratch(*counterpart, scene_json, output, seconds, megabytes, [&](const fs::path& file) {
+                    if (!read_rows(file, steps, requested.dt, other).empty()) other.clear();
+                });
+                if (their.interrupted) return RunResult{failed.spec, {}, {}, true};
             }
-            const WorkerOutput their = run_in_scratch(*counterpart, scene_json, output, seconds, megabytes, [&](const fs::path& file) {
-                if (!read_rows(file, steps, requested.dt, other).empty()) other.clear();
-            });
-            if (their.interrupted) return RunResult{failed.spec, {}, {}, true};
         } else {
             other = builtin_rows(*scene, client.counterpart, requested.dt, steps);
         }

@@ -27,17 +27,22 @@ json loaded_files() {
     return files;
 }
 
+// The journal file, open for reading; InputError when out_dir holds none.
+std::ifstream open_journal(const fs::path& out_dir) {
+    const fs::path file = journal_file(out_dir);
+    if (!fs::exists(fs::symlink_status(file)))
+        throw InputError("--resume " + out_dir.string() + ": no interrupted run there (no partial/runs.jsonl)");
+    return open_input_stream(file, "the journal");
+}
+
 // The journal's first line, what the command was: {"journal": {"command": [...], "cwd": "...",
-// "files": [[hash, path], ...]}}. InputError naming the file when there is none, or it is not one.
+// "files": [[hash, path], ...]}}, read from `in`, left at the first record. InputError naming
+// `file` when it is not one.
 struct Header {
     json fields;
     std::size_t length = 0;  // with its line break
 };
-Header read_header(const fs::path& out_dir) {
-    const fs::path file = journal_file(out_dir);
-    if (!fs::exists(fs::symlink_status(file)))
-        throw InputError("--resume " + out_dir.string() + ": no interrupted run there (no partial/runs.jsonl)");
-    std::ifstream in = open_input_stream(file, "the journal");
+Header read_header(std::istream& in, const fs::path& file) {
     std::string line;
     const bool whole = static_cast<bool>(std::getline(in, line)) && !in.eof();
     const json j = whole ? json::parse(line, nullptr, false) : json();
@@ -48,21 +53,24 @@ Header read_header(const fs::path& out_dir) {
     if (!valid) throw InputError(file.string() + ":1: not the journal of a rotbench command; the folder's bookkeeping was changed by something else");
     return {j["journal"], line.size() + 1};
 }
+Header read_header(const fs::path& out_dir) {
+    std::ifstream in = open_journal(out_dir);
+    return read_header(in, journal_file(out_dir));
+}
 
-// The runs recorded after the header, and the bytes their whole records span from its end: a
-// kill while a record was being appended leaves a cut one at the end, which is dropped (and cut
-// off the file when the command is resumed).
+// The header and the runs recorded after it, and the bytes the header and the whole records
+// span: a kill while a record was being appended leaves a cut one at the end, which is dropped
+// (and cut off the file when the command is resumed).
 struct Records {
+    Header header;
     std::map<RunSpec, RunResult> runs;
     std::size_t count = 0, whole_length = 0;
 };
 Records read_records(const fs::path& out_dir) {
-    const Header header = read_header(out_dir);
     const fs::path file = journal_file(out_dir);
-    std::ifstream in = open_input_stream(file, "the journal");
-    in.seekg(static_cast<std::streamoff>(header.length));
+    std::ifstream in = open_journal(out_dir);
+    Records found{read_header(in, file)};
     RunRecords records = parse_run_records(in, file.string());
-    Records found;
     for (auto& [index, run] : records.runs) {
         const RunSpec key = run.spec;
         if (!found.runs.emplace(key, std::move(run)).second)
@@ -70,15 +78,13 @@ Records read_records(const fs::path& out_dir) {
                                          key.scheme, kind_name(key.kind), format_number(key.dt)));
     }
     found.count = records.runs.size();
-    found.whole_length = header.length + records.whole_length;
+    found.whole_length = found.header.length + records.whole_length;
     return found;
 }
 
 }  // namespace
 
 Journal Journal::start(const OutputDir& out, const std::vector<std::string>& arguments) {
-    for (const auto& a : arguments)
-        if (a.find('\n') != std::string::npos) throw InputError("an argument holds a line break");  // the CLI refuses them first
     const json header = {{"journal", {{"command", arguments}, {"cwd", fs::current_path().string()}, {"files", loaded_files()}}}};
     out.write("partial/runs.jsonl", header.dump(-1, ' ', false, json::error_handler_t::replace) + "\n");
     return Journal(out, 0);
@@ -86,13 +92,13 @@ Journal Journal::start(const OutputDir& out, const std::vector<std::string>& arg
 
 Journal Journal::reopen(const OutputDir& out) {
     const fs::path out_dir = out.path();
-    if (read_header(out_dir).fields.at("files") != loaded_files())
+    const Records found = read_records(out_dir);
+    if (found.header.fields.at("files") != loaded_files())
         throw InputError("--resume " + out_dir.string() +
                          ": a plug-in or client file has changed since the run was interrupted "
                          "(partial/runs.jsonl names each with its hash); run it again with --overwrite");
     // A record cut short by a kill would sit between the runs appended from now on: cut it off.
     const fs::path runs = out.claim("partial/runs.jsonl");
-    const Records found = read_records(out_dir);
     if (found.whole_length != fs::file_size(runs)) fs::resize_file(runs, found.whole_length);
     return Journal(out, found.count);
 }
