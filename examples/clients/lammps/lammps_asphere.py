@@ -23,7 +23,7 @@ import os
 import sys
 
 sys.dont_write_bytecode = True  # nothing left beside the adapter
-from lammps_common import matvec, rot, run_lmp, torque_of
+from lammps_common import dump_frames, matvec, rot, run_lmp, torque_of
 
 spec_path, out_path = sys.argv[1], sys.argv[2]
 spec = json.load(open(spec_path))
@@ -79,15 +79,10 @@ lines += ["fix body all nve/asphere", "timestep %s" % g(dt), "thermo 0",
 open("in.rotbench", "w").write("\n".join(lines) + "\n")
 run_lmp("in.rotbench")
 
-with open("body.dump") as dump, open(out_path, "w") as out:
+with open(out_path, "w") as out:
     out.write(spec["columns"] + "\n")
-    step = None
-    for line in dump:
-        if line.startswith("ITEM: TIMESTEP"):
-            step = int(next(dump))
-        elif line.startswith("ITEM: ATOMS"):
-            values = list(map(float, next(dump).split()))
-            q, L = values[:4], (L0 if step == 0 else values[4:])
-            R = rot(q)
-            body = [sum(R[j][i] * L[j] for j in range(3)) / moments[i] for i in range(3)]
-            out.write(",".join(repr(v) for v in [step * dt] + q + matvec(R, body)) + "\n")
+    for step, (values,) in dump_frames("body.dump", 1):
+        q, L = values[:4], (L0 if step == 0 else values[4:])
+        R = rot(q)
+        body = [sum(R[j][i] * L[j] for j in range(3)) / moments[i] for i in range(3)]
+        out.write(",".join(repr(v) for v in [step * dt] + q + matvec(R, body)) + "\n")

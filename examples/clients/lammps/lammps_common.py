@@ -1,5 +1,6 @@
 """What the LAMMPS adapters share (docs/clients.md): rotations, a scene's torque at an orientation
-(also for the callback lammps_asphere.py hands LAMMPS), and running `lmp`. Python 3 stdlib only."""
+(also for the callback lammps_asphere.py hands LAMMPS), running `lmp` and reading its dump.
+Python 3 stdlib only."""
 import subprocess
 import sys
 
@@ -32,3 +33,13 @@ def run_lmp(script):  # runs lmp on the input file; on failure exits with its la
     if lammps.returncode != 0:
         said = [line.strip() for line in (lammps.stdout + lammps.stderr).splitlines() if line.strip()]
         sys.exit("lmp exited with status %d: %s" % (lammps.returncode, " | ".join(said[-3:]) or "nothing said"))
+
+
+def dump_frames(path, atoms):  # (step, one list of numbers per atom) for each frame of a custom dump
+    with open(path) as dump:
+        step = None
+        for line in dump:
+            if line.startswith("ITEM: TIMESTEP"):
+                step = int(next(dump))
+            elif line.startswith("ITEM: ATOMS"):
+                yield step, [list(map(float, next(dump).split())) for _ in range(atoms)]

@@ -19,7 +19,7 @@ import math
 import sys
 
 sys.dont_write_bytecode = True  # nothing left beside the adapter
-from lammps_common import cross, matvec, rot, run_lmp
+from lammps_common import cross, dump_frames, matvec, rot, run_lmp
 
 style, spec_path, out_path = sys.argv[1], sys.argv[2], sys.argv[3]
 spec = json.load(open(spec_path))
@@ -100,17 +100,12 @@ lines += ["timestep %s" % g(spec["dt"]), "thermo 0",
 open("in.rotbench", "w").write("\n".join(lines) + "\n")
 run_lmp("in.rotbench")
 
-with open("markers.dump") as dump, open(out_path, "w") as out:
+with open(out_path, "w") as out:
     out.write(spec["columns"] + "\n")
-    step = None
-    rows = []
-    for line in dump:
-        if line.startswith("ITEM: TIMESTEP"):
-            step = int(next(dump))
-        elif line.startswith("ITEM: ATOMS"):
-            rows = [list(map(float, next(dump).split()[1:])) for _ in atoms]
-            cols = [[(rows[2 * k][i] - rows[2 * k + 1][i]) / (2 * A) for i in range(3)] for k in range(3)]
-            rel = [[(rows[2 * k][3 + i] - rows[2 * k + 1][3 + i]) / (2 * A) for i in range(3)] for k in range(3)]
-            w = [0.5 * sum(cross(cols[k], rel[k])[i] for k in range(3)) for i in range(3)]
-            m = [[cols[j][i] for j in range(3)] for i in range(3)]
-            out.write(",".join(repr(v) for v in [step * spec["dt"]] + quat(m) + w) + "\n")
+    for step, atom_rows in dump_frames("markers.dump", len(atoms)):
+        rows = [r[1:] for r in atom_rows]  # without the id
+        cols = [[(rows[2 * k][i] - rows[2 * k + 1][i]) / (2 * A) for i in range(3)] for k in range(3)]
+        rel = [[(rows[2 * k][3 + i] - rows[2 * k + 1][3 + i]) / (2 * A) for i in range(3)] for k in range(3)]
+        w = [0.5 * sum(cross(cols[k], rel[k])[i] for k in range(3)) for i in range(3)]
+        m = [[cols[j][i] for j in range(3)] for i in range(3)]
+        out.write(",".join(repr(v) for v in [step * spec["dt"]] + quat(m) + w) + "\n")
