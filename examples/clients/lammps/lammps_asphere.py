@@ -76,8 +76,7 @@ if law["law"] != "none":
 lines += ["fix body all nve/asphere", "timestep %s" % g(dt), "thermo 0",
           "dump d all custom 1 body.dump c_q[1] c_q[2] c_q[3] c_q[4] angmomx angmomy angmomz",
           "dump_modify d format float %.17g", "run %d" % spec["steps"]]
-open("in.rotbench", "w").write("\n".join(lines) + "\n")
-run_lmp("in.rotbench")
+run_lmp(lines)
 
 with open(out_path, "w") as out:
     out.write(spec["columns"] + "\n")

@@ -28,8 +28,10 @@ def torque_of(q, law):  # the scene's torque (scene.json's "torque") at orientat
     return [0.0, 0.0, 0.0]
 
 
-def run_lmp(script):  # runs lmp on the input file; on failure exits with its last words (MPI's and LAMMPS's errors)
-    lammps = subprocess.run(["lmp", "-in", script, "-log", "none", "-nocite"], stderr=subprocess.PIPE, stdout=subprocess.PIPE, text=True)
+def run_lmp(lines):  # writes the input script and runs lmp on it; on failure exits with its last words (MPI's and LAMMPS's errors)
+    open("in.rotbench", "w").write("\n".join(lines) + "\n")
+    lammps = subprocess.run(["lmp", "-in", "in.rotbench", "-log", "none", "-nocite"], stderr=subprocess.PIPE, stdout=subprocess.PIPE,
+                            text=True)
     if lammps.returncode != 0:
         said = [line.strip() for line in (lammps.stdout + lammps.stderr).splitlines() if line.strip()]
         sys.exit("lmp exited with status %d: %s" % (lammps.returncode, " | ".join(said[-3:]) or "nothing said"))

@@ -97,8 +97,7 @@ lines.append("fix body all %s %s infile body.rigid" % (style, bodystyle))
 lines += ["timestep %s" % g(spec["dt"]), "thermo 0",
           "dump d all custom 1 markers.dump id x y z vx vy vz",
           'dump_modify d sort id format float %.17g', "run %d" % spec["steps"]]
-open("in.rotbench", "w").write("\n".join(lines) + "\n")
-run_lmp("in.rotbench")
+run_lmp(lines)
 
 with open(out_path, "w") as out:
     out.write(spec["columns"] + "\n")
