@@ -153,7 +153,7 @@ TEST_CASE("clients: the scene spec holds the body, its initial state in both fra
     };
     CHECK((to_world(q0, v("L0_body")) - v("L0_world")).norm() < 1e-15 * v("L0_world").norm());  // one rotation's round-off
     CHECK(v("L0_body") == v("inertia_body").cwiseProduct(v("omega0_body")));
-    CHECK_THROWS_WITH(client_scene_json(*make_scene("sphere_pair"), {"sphere_pair", "x", 1e-5, 0.0}, 1e-3, 100),
+    CHECK_THROWS_WITH(client_scene_json(*make_scene("fibre_bounce"), {"fibre_bounce", "x", 1e-5, 0.0}, 1e-3, 100),
                       Catch::Contains("not one body under a torque law a client can take"));
 }
 

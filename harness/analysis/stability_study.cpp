@@ -4,6 +4,7 @@
 #include "harness/scenes/contact_pair.hpp"
 #include "harness/scenes/stability_probe.hpp"
 #include "harness/store/output_files.hpp"
+#include "harness/store/client.hpp"
 #include "harness/store/parse.hpp"
 
 #include <fmt/format.h>
@@ -72,21 +73,28 @@ SpectralCurve curve_of(const RunResult& run) {
 }  // namespace
 
 std::vector<RunSpec> stability_plan(const std::vector<std::string>& scenes, const std::vector<std::string>& schemes,
-                                    const std::vector<double>& zetas, const std::vector<double>& omegas) {
+                                    const std::vector<double>& zetas, const std::vector<double>& omegas, std::vector<std::string>* skipped) {
     check_stability_scenes(scenes);
     std::vector<RunSpec> plan;
     for (const auto& id : scenes) {
-        for (double value : id == "fast_spin" ? omegas : zetas) {
+        const std::vector<double>& values = id == "fast_spin" ? omegas : zetas;
+        for (double value : values) {
             const ParamOverrides params = {{varied(id), {value}}};
             const auto scene = make_scene(id, params);
             for (const auto& scheme : schemes) {
+                if (const std::string why = why_not_taken(scheme, id); !why.empty()) {
+                    if (skipped && value == values.front()) skipped->push_back(why);
+                    continue;
+                }
                 plan.push_back({id, scheme, 0.0, scene->t_end(), params, RunKind::stability, false});
-                if (linearisable(*scene)) plan.push_back({id, scheme, 0.0, scene->t_end(), params, RunKind::amplification, false});
+                if (linearisable(*scene) && !client_of(scheme))
+                    plan.push_back({id, scheme, 0.0, scene->t_end(), params, RunKind::amplification, false});
             }
         }
         const auto scene = make_scene(id);  // the curves: undamped (the contact scenes' default zeta is 0)
         if (linearisable(*scene))
-            for (const auto& scheme : schemes) plan.push_back({id, scheme, 0.0, scene->t_end(), {}, RunKind::spectral, false});
+            for (const auto& scheme : schemes)
+                if (!client_of(scheme)) plan.push_back({id, scheme, 0.0, scene->t_end(), {}, RunKind::spectral, false});
     }
     return plan;
 }

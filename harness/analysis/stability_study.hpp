@@ -52,9 +52,12 @@ inline constexpr const char* stability_store = "stability.jsonl";
 
 // The study's runs: contact scenes once per zeta, fast_spin once per omega_max, each scheme
 // searched (kind stability) and, where the scene linearises at rest, its eigenvalue limit
-// (amplification); then the undamped spectral curves (spectral).
+// (amplification); then the undamped spectral curves (spectral). A client has no step map to
+// linearise: it is searched only, on the scenes its file lists (each pair skipped is said in
+// `skipped`, when given).
 std::vector<RunSpec> stability_plan(const std::vector<std::string>& scenes, const std::vector<std::string>& schemes,
-                                    const std::vector<double>& zetas, const std::vector<double>& omegas);
+                                    const std::vector<double>& zetas, const std::vector<double>& omegas,
+                                    std::vector<std::string>* skipped = nullptr);
 
 // The study those runs make, rows and curves in their order; the eigenvalue limit is NaN where
 // the scene's state is not an equilibrium at rest. InputError (naming `name`) for a run no

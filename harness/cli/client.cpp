@@ -55,7 +55,7 @@ private:
         const std::int64_t steps = step_count(t_end, spec.dt);
         const auto* granular = dynamic_cast<const GranularScene*>(made.get());
         if (granular && horizon_) throw InputError("--horizon: a client runs a granular scene as a trajectory only");
-        const std::string json = granular ? granular_scene_json(*granular, spec, t_end, steps) : client_scene_json(*made, spec, t_end, steps);
+        const std::string json = client_scene_json(*made, spec, t_end, steps);
         if (out_.empty()) {
             how.out << json;
             return 0;

@@ -39,17 +39,19 @@ public:
                                               : parse_id_list(schemes_, SchemeRegistry::instance(), "scheme");
         const auto zetas = parse_nonnegative_list(zetas_, "--zeta");
         const auto omegas = parse_positive_list(omegas_, "--omega-max");
-        check_stability_scenes(scenes);
+        std::vector<std::string> skipped;
+        const std::vector<RunSpec> plan = stability_plan(scenes, schemes, zetas, omegas, &skipped);  // every input checked first
         const OutputDir dir = OutputDir::open(how.resuming ? *how.resuming : fs::path(out_),
                                               {"stability", "stability.csv",
                                                {stability_store, "stability.csv", "stability_spin.csv", "stability.md"},
                                                overwrite_, how.resuming.has_value()});
+        for (const auto& why : skipped) how.out << "skipped: " << why << "\n";
         ExecOptions options{.jobs = jobs_, .quiet = quiet_, .verb = "stability"};
         isolation_.apply(options.run);
         std::vector<RunResult> runs;
         {
             Executor executor = make_executor(how, &dir, options);
-            runs = executor.run(stability_plan(scenes, schemes, zetas, omegas));
+            runs = executor.run(plan);
             if (executor.signal()) return executor.interrupted();
         }
         const auto [rows, curves] = stability_study(runs, stability_store);

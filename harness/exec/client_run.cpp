@@ -1,5 +1,6 @@
 #include "harness/exec/client_run.hpp"
 
+#include "harness/exec/contact_client.hpp"
 #include "harness/exec/granular_client.hpp"
 #include "harness/exec/run_kinds.hpp"
 #include "harness/store/client.hpp"
@@ -20,7 +21,7 @@ namespace rotbench {
 namespace {
 
 namespace fs = std::filesystem;
-using Row = std::array<double, 8>;
+using Row = TrajectoryRow;
 
 // The program's trajectory, stepped through as if a scheme made it: each step takes the next row.
 class Replay final : public RotationScheme {
@@ -55,39 +56,6 @@ struct Scratch {
 };
 
 nlohmann::ordered_json vec(const Vec3& v) { return {v.x(), v.y(), v.z()}; }
-
-// The rows of the program's trajectory, or why they are not one.
-std::string read_rows(const fs::path& file, std::int64_t steps, double dt, std::vector<Row>& rows) {
-    // Sized before it is read: the rows due, at 64 bytes a number at most, bound it; the reader
-    // would otherwise hold the whole file and a string per field (40-75 bytes a byte).
-    const std::string name = "its trajectory.csv";
-    const double most_bytes = 4096.0 + 64.0 * 8.0 * static_cast<double>(steps + 1);
-    std::string text;
-    if (const std::string why = read_program_output(file, name, most_bytes, fmt::format("{} rows of 8 numbers", steps + 1), text); !why.empty())
-        return why;
-    try {
-        const auto records = read_csv(text, name, client_trajectory_header);
-        const auto columns = split_commas(client_trajectory_header);
-        // Row by row first, so that a wrong value is named by its line and column (FILE:LINE:COLUMN).
-        for (std::size_t k = 0; k < records.size() && static_cast<std::int64_t>(k) <= steps; ++k) {
-            Row row;
-            for (std::size_t c = 0; c < row.size(); ++c) {
-                const std::string at = fmt::format("{}:{} ({})", where(name, records[k]), c + 1, columns[c]);
-                row[c] = csv_number(records[k][c], at);
-                if (!std::isfinite(row[c])) return fmt::format("{}: a value that is not finite ({})", at, records[k][c]);
-            }
-            const double t = static_cast<double>(k) * dt;
-            if (std::abs(row[0] - t) > 1e-9 * std::max(1.0, std::abs(t)))
-                return fmt::format("{}: t = {} where step {} is at t = {}", where(name, records[k]), records[k][0], k, format_number(t));
-            rows.push_back(row);
-        }
-        if (static_cast<std::int64_t>(records.size()) != steps + 1)
-            return fmt::format("its trajectory has {} rows; {} are due, one at every step t = k dt, k = 0 ... {}", records.size(), steps + 1, steps);
-    } catch (const InputError& e) {
-        return std::string("its trajectory is malformed: ") + e.what();
-    }
-    return "";
-}
 
 // The states a built-in scheme makes on the scene at the same step, as the rows a program writes.
 std::vector<Row> builtin_rows(const Scene& scene, const std::string& scheme_id, double dt, std::int64_t steps) {
@@ -136,9 +104,60 @@ WorkerOutput run_in_scratch(const LoadedClient& client, const std::string& scene
     return out;
 }
 
-}  // namespace
+// The program's own cost, whatever became of its output: a slow rung is found by it.
+RunResult timed(RunResult r, double cpu_seconds, double wall_seconds) {
+    r.metrics.emplace_back(metric::client_cpu_seconds, cpu_seconds);
+    r.metrics.emplace_back(metric::client_wall_seconds, wall_seconds);
+    return r;
+}
 
-std::string client_scene_json(const Scene& scene, const RunSpec& spec, double t_end, std::int64_t steps) {
+RunResult declined_run(const RunSpec& spec, const std::string& last_error_line) {
+    return RunResult{spec, {{metric::declined, 1.0}}, "declined" + last_error_line};
+}
+
+// A built-in's stability search (harness/exec/stability.hpp: the same criterion, horizon and
+// bisection) with each trial one run of the program over the horizon, judged on its states.
+// A trial that fails or is declined ends the search with no limit: a failed program is not
+// evidence of a blow-up; states that are not finite are.
+RunResult contact_stability_search(const LoadedClient& client, const RunSpec& requested, const ContactPairScene& scene, double seconds,
+                                   std::size_t megabytes, RunResult result) {
+    const StabilityCriterion criterion = stability_criterion(scene);
+    double cpu = 0, wall = 0;
+    std::string stop;  // why the search has no limit
+    bool declined = false, interrupted = false;
+    const auto unstable = [&](double dt) {
+        if (!stop.empty() || interrupted) return true;  // the search runs out with no more trials
+        RunSpec trial = requested;
+        trial.dt = dt;
+        const auto steps = static_cast<std::int64_t>(std::ceil(criterion.horizon / dt));
+        std::vector<Row> rows;
+        std::string why;
+        const WorkerOutput out = run_in_scratch(
+            client, contact_scene_json(scene, trial, static_cast<double>(steps) * dt, steps), "trajectory.csv",
+            seconds > 0 ? seconds : steps_timeout(2.0 * static_cast<double>(steps)), megabytes,
+            [&](const fs::path& file) { why = read_trajectory(file, contact_trajectory, steps, dt, rows); });
+        cpu += out.cpu_seconds, wall += out.wall_seconds;
+        interrupted = out.interrupted;
+        if (out.exit_status == client_declines) declined = true, stop = out.last_error_line;
+        else if (!out.failure.empty() || !why.empty())
+            stop = fmt::format("at dt = {}: {}{}", format_number(dt), out.failure.empty() ? why : out.failure, out.last_error_line);
+        return interrupted || !stop.empty() || contact_blew_up(scene, rows, criterion);
+    };
+    const double peng = scene.predicted_limit();
+    // Down to Peng's step / 64 at most: a program writes every step of a trial (a built-in stops
+    // at the blow-up), 64 000 periods' worth there. 0 below that, as for a built-in below 2^-30.
+    const double limit = stability_boundary(unstable, peng, stability_tolerance, 6);
+    if (interrupted) return RunResult{result.spec, {}, {}, true};
+    if (declined) return timed(declined_run(result.spec, stop), cpu, wall);
+    if (!stop.empty()) {
+        result.failure = stop;
+        return timed(std::move(result), cpu, wall);
+    }
+    result.metrics = {{metric::dt_empirical, limit}, {metric::dt_peng, peng}, {metric::stability_ratio, limit / peng}};
+    return timed(std::move(result), cpu, wall);
+}
+
+std::string one_body_scene_json(const Scene& scene, const RunSpec& spec, double t_end, std::int64_t steps) {
     const auto law = scene.torque_law();
     const Bodies b = scene.initial_state();
     if (!law || b.size() != 1) throw InputError("scene '" + spec.scene + "' is not one body under a torque law a client can take");
@@ -167,6 +186,14 @@ std::string client_scene_json(const Scene& scene, const RunSpec& spec, double t_
     return j.dump(2) + "\n";
 }
 
+}  // namespace
+
+std::string client_scene_json(const Scene& scene, const RunSpec& spec, double t_end, std::int64_t steps) {
+    if (const auto* granular = dynamic_cast<const GranularScene*>(&scene)) return granular_scene_json(*granular, spec, t_end, steps);
+    if (const auto* contact = dynamic_cast<const ContactPairScene*>(&scene)) return contact_scene_json(*contact, spec, t_end, steps);
+    return one_body_scene_json(scene, spec, t_end, steps);
+}
+
 RunResult run_client(const RunSpec& requested, const RunOptions& options, const IsolationLimits& limits) {
     const LoadedClient& client = *client_of(requested.scheme);
     const auto scene = scene_of(requested);
@@ -177,60 +204,60 @@ RunResult run_client(const RunSpec& requested, const RunOptions& options, const 
         failed.metrics = {{metric::unstable, 1.0}};
         return failed;
     };
-    if (requested.kind != RunKind::trajectory && requested.kind != RunKind::horizon)
-        return fail(fmt::format("a client makes runs of kind trajectory and horizon, not {}", kind_name(requested.kind)));
+    auto* granular = dynamic_cast<GranularScene*>(scene.get());
+    const auto* contact = dynamic_cast<const ContactPairScene*>(scene.get());
+    const bool stability = requested.kind == RunKind::stability && contact;
+    if (requested.kind != RunKind::trajectory && requested.kind != RunKind::horizon && !stability)
+        return fail(fmt::format("a client makes runs of kind trajectory and horizon{}, not {}", contact ? " (stability on a contact scene)" : "",
+                                kind_name(requested.kind)));
     if (const std::string why = why_not_taken(requested.scheme, requested.scene); !why.empty()) return fail(why);
+    if (granular && requested.kind != RunKind::trajectory) return fail("a client runs a granular scene as a trajectory only");
+    const std::size_t megabytes = limits.megabytes ? limits.megabytes : isolation_memory(1);
+    if (stability) return contact_stability_search(client, requested, *contact, limits.seconds, megabytes, failed);
     const double t_end = requested.kind == RunKind::horizon ? energy_horizon * scene->t_end() : scene->t_end();
     const std::int64_t steps = step_count(t_end, requested.dt);
-    auto* granular = dynamic_cast<GranularScene*>(scene.get());
-    if (granular && requested.kind != RunKind::trajectory) return fail("a client runs a granular scene as a trajectory only");
-    const std::string output = granular ? "samples.csv" : "trajectory.csv";
     std::string scene_json;
     try {
-        scene_json = granular ? granular_scene_json(*granular, requested, t_end, steps) : client_scene_json(*scene, requested, t_end, steps);
+        scene_json = client_scene_json(*scene, requested, t_end, steps);
     } catch (const InputError& e) {  // a scene its client file lists but no spec can describe
         return fail(e.what());
     }
-    const double body_steps = static_cast<double>(steps) * static_cast<double>(granular ? scene->initial_state().size() : 1);
+    const TrajectoryLayout& layout = contact ? contact_trajectory : one_body_trajectory;
+    const double body_steps = static_cast<double>(steps) * static_cast<double>(scene->initial_state().size());
     const double seconds = limits.seconds > 0 ? limits.seconds : steps_timeout(body_steps);
-    const std::size_t megabytes = limits.megabytes ? limits.megabytes : isolation_memory(1);
+    const std::string output = granular ? "samples.csv" : "trajectory.csv";
     RunResult replayed;
     std::vector<Row> rows;
     std::string why;
     const WorkerOutput out = run_in_scratch(client, scene_json, output, seconds, megabytes, [&](const fs::path& file) {
         if (granular) replayed = replay_granular_samples(requested, *granular, file, steps);
-        else why = read_rows(file, steps, requested.dt, rows);
+        else why = read_trajectory(file, layout, steps, requested.dt, rows);
     });
     if (out.interrupted) return RunResult{failed.spec, {}, {}, true};
-    // The program's own cost, whatever became of its output: a slow rung is found by it.
-    const auto timed = [&out](RunResult r) {
-        r.metrics.emplace_back(metric::client_cpu_seconds, out.cpu_seconds);
-        r.metrics.emplace_back(metric::client_wall_seconds, out.wall_seconds);
-        return r;
-    };
-    if (out.exit_status == client_declines) {
-        RunResult declined{failed.spec, {{metric::declined, 1.0}}, "declined" + out.last_error_line};
-        return timed(std::move(declined));
-    }
-    if (!out.failure.empty()) return timed(fail(out.failure));
+    if (out.exit_status == client_declines) return timed(declined_run(failed.spec, out.last_error_line), out.cpu_seconds, out.wall_seconds);
+    if (!out.failure.empty()) return timed(fail(out.failure), out.cpu_seconds, out.wall_seconds);
     if (granular) {
         if (!replayed.failure.empty()) replayed.failure += out.last_error_line;
         replayed.spec.t_end = t_end;
         replayed.metrics.emplace_back(metric::client_cpu_seconds_per_simulated_second, out.cpu_seconds / t_end);
-        return timed(std::move(replayed));
+        return timed(std::move(replayed), out.cpu_seconds, out.wall_seconds);
     }
-    if (!why.empty()) return timed(fail(why + out.last_error_line));
-    const SchemeFactory replay = [&rows] { return std::make_unique<Replay>(rows); };
-    if (requested.kind == RunKind::horizon) return timed(run_horizon(requested, replay));
+    if (!why.empty()) return timed(fail(why + out.last_error_line), out.cpu_seconds, out.wall_seconds);
+    const SchemeFactory replay = [&rows, contact]() -> std::unique_ptr<RotationScheme> {
+        if (contact) return contact_replay(rows);
+        return std::make_unique<Replay>(rows);
+    };
+    if (requested.kind == RunKind::horizon) return timed(run_horizon(requested, replay), out.cpu_seconds, out.wall_seconds);
     RunResult result = run_trajectory(requested, {.measure_time = false, .series_samples = options.series_samples}, replay);
-    if (!client.counterpart.empty() && result.failure.empty()) {
+    // On a contact scene the counterpart's comparison is not made (it compares one body's rotation).
+    if (!client.counterpart.empty() && result.failure.empty() && !contact) {
         // Another client (another version of the same code): its program on the same scene.json, on
         // a scene its file takes; elsewhere nothing to compare with.
         std::vector<Row> other;
         if (const LoadedClient* counterpart = client_of(client.counterpart)) {
             if (why_not_taken(counterpart->id, requested.scene).empty()) {
                 const WorkerOutput their = run_in_scratch(*counterpart, scene_json, output, seconds, megabytes, [&](const fs::path& file) {
-                    if (!read_rows(file, steps, requested.dt, other).empty()) other.clear();
+                    if (!read_trajectory(file, one_body_trajectory, steps, requested.dt, other).empty()) other.clear();
                 });
                 if (their.interrupted) return RunResult{failed.spec, {}, {}, true};
             }
@@ -239,7 +266,7 @@ RunResult run_client(const RunSpec& requested, const RunOptions& options, const 
         }
         add_counterpart_difference(result, rows, other);
     }
-    return timed(std::move(result));
+    return timed(std::move(result), out.cpu_seconds, out.wall_seconds);
 }
 
 }  // namespace rotbench

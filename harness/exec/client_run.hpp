@@ -6,6 +6,7 @@
 // directory, with whatever the program left in it, is removed afterwards. docs/clients.md.
 #pragma once
 
+#include "harness/exec/client_trajectory.hpp"
 #include "harness/exec/isolation.hpp"
 #include "harness/exec/run.hpp"
 
@@ -13,20 +14,19 @@
 
 namespace rotbench {
 
-// The columns a client writes: time, the orientation (body to world, w first; q and -q are the
-// same orientation) and the world angular velocity, one row at every step t = k dt, k = 0 ... N.
-inline constexpr const char* client_trajectory_header = "t,qw,qx,qy,qz,wx,wy,wz";
-
 // The exit status with which a client's program says "this scene or these parameters are not
 // mine" (docs/clients.md): the run is skipped with the last line of its standard error, not failed.
 inline constexpr int client_declines = 3;
 
 // The scene's spec as a client reads it, for a run of `steps` steps of `dt` (t_end = steps dt,
-// to within round-off). InputError when the scene is not one body under a TorqueLaw.
+// to within round-off): a granular scene's, a contact scene's, or one body's. InputError when
+// the scene is none of these (one body not under a TorqueLaw).
 std::string client_scene_json(const Scene& scene, const RunSpec& spec, double t_end, std::int64_t steps);
 
 // Runs of kind trajectory and horizon (on a granular scene, trajectory only: the program runs the
-// scene itself and writes samples of its stones, harness/exec/granular_client.hpp); any other
+// scene itself and writes samples of its stones, harness/exec/granular_client.hpp; on a contact
+// scene, trajectory and stability: the search of a built-in's, each trial one run of the
+// program, harness/exec/contact_client.hpp); any other
 // kind, a scene the client file does not list, a program that fails, hangs or writes a
 // trajectory that is malformed, short, or not finite is a failed run saying which; one that exits
 // with client_declines declined it. The built-ins' timing metrics are not measured: every run

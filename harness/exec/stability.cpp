@@ -22,21 +22,23 @@ Vec3 log_map(const Quat& q) {  // rotation vector of a unit quaternion, angle in
     return (2.0 * std::atan2(s, u.w()) / s) * u.vec();
 }
 
-// Bracket and bisect the boundary of `unstable` (monotone in dt, assumed).
-double boundary(const std::function<bool(double)>& unstable, double dt_guess, double tolerance) {
+}  // namespace
+
+double stability_boundary(const std::function<bool(double)>& unstable, double dt_guess, double tolerance, int halvings) {
     double lo = dt_guess, hi = dt_guess;
     if (unstable(dt_guess)) {
-        for (int k = 0; unstable(lo); ++k) {
-            if (k == 30) return 0.0;
+        do {
+            if (halvings-- == 0) return 0.0;
             hi = lo;
             lo *= 0.5;
-        }
+        } while (unstable(lo));
     } else {
-        for (int k = 0; !unstable(hi); ++k) {
-            if (k == 30) return std::numeric_limits<double>::infinity();  // no limit up to 2^30 dt_guess
+        int doublings = 30;
+        do {
+            if (doublings-- == 0) return std::numeric_limits<double>::infinity();  // no limit up to 2^30 dt_guess
             lo = hi;
             hi *= 2.0;
-        }
+        } while (!unstable(hi));
     }
     while ((hi - lo) > tolerance * lo) {
         const double mid = 0.5 * (lo + hi);
@@ -44,8 +46,6 @@ double boundary(const std::function<bool(double)>& unstable, double dt_guess, do
     }
     return lo;
 }
-
-}  // namespace
 
 bool unstable_at(const Scene& scene, const std::string& scheme_id, double dt, const StabilityCriterion& c) {
     auto scheme = SchemeRegistry::instance().at(scheme_id, "scheme").make();
@@ -56,8 +56,7 @@ bool unstable_at(const Scene& scene, const std::string& scheme_id, double dt, co
     bool blew_up = false;
     try {
         simulate(scene, *scheme, b, dt, steps, evals, [&](std::int64_t, double, const Bodies& s) {
-            const double e = scene.energy(s);
-            blew_up = !std::isfinite(e) || e > c.growth * e0;
+            blew_up = energy_blew_up(scene.energy(s), e0, c);
             return !blew_up && !interrupt_signal();  // a signal ends the search (the caller drops it)
         });
     } catch (...) {
@@ -68,7 +67,7 @@ bool unstable_at(const Scene& scene, const std::string& scheme_id, double dt, co
 
 double empirical_limit(const Scene& scene, const std::string& scheme, double dt_guess, const StabilityCriterion& c,
                        double tolerance) {
-    return boundary([&](double dt) { return unstable_at(scene, scheme, dt, c); }, dt_guess, tolerance);
+    return stability_boundary([&](double dt) { return unstable_at(scene, scheme, dt, c); }, dt_guess, tolerance);
 }
 
 namespace {
@@ -194,7 +193,7 @@ double spectral_radius(const Scene& scene, const StepJacobian& j) {
 
 double amplification_limit(const Scene& scene, const std::string& scheme, double dt_guess, const StabilityCriterion& c,
                            double tolerance) {
-    return boundary(
+    return stability_boundary(
         [&](double dt) {
             double rho = 0;
             try {

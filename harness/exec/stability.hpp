@@ -14,6 +14,8 @@
 #include "harness/scenes/stability_probe.hpp"
 
 #include <Eigen/Core>
+#include <cmath>
+#include <functional>
 #include <string>
 
 namespace rotbench {
@@ -27,18 +29,27 @@ struct StabilityCriterion {
 // advice): energy growth by 1e6 within 1000 periods of the scene's fastest mode.
 inline constexpr double stability_horizon_periods = 1000.0;
 inline constexpr double stability_growth = 1e6;
+// The relative width of the bracket a search stops at.
+inline constexpr double stability_tolerance = 0.005;
 inline StabilityCriterion stability_criterion(const StabilityProbe& probe) {
     return {stability_horizon_periods * probe.period(), stability_growth};
 }
 
+// The criterion on one state: energy `e` past `growth` times the initial `e0`, or not finite.
+inline bool energy_blew_up(double e, double e0, const StabilityCriterion& c) { return !std::isfinite(e) || e > c.growth * e0; }
+
+// The boundary of `unstable` (monotone in dt, assumed): bracketed from `dt_guess` by doubling
+// or halving, then bisected until the bracket is narrower than `tolerance` (relative); the
+// largest dt found stable. 0 when every dt down to dt_guess / 2^halvings is unstable; infinity
+// when none up to dt_guess 2^30 is.
+double stability_boundary(const std::function<bool(double)>& unstable, double dt_guess, double tolerance, int halvings = 30);
+
 // One run of `steps` = horizon/dt steps from the scene's initial state.
 bool unstable_at(const Scene& scene, const std::string& scheme, double dt, const StabilityCriterion& c);
 
-// The largest dt found stable, bracketed from `dt_guess` by doubling or halving and then
-// bisected until the bracket is narrower than `tolerance` (relative). 0 when every dt down
-// to dt_guess / 2^30 is unstable; infinity when none up to dt_guess 2^30 is.
+// stability_boundary of runs of the scheme (unstable_at).
 double empirical_limit(const Scene& scene, const std::string& scheme, double dt_guess, const StabilityCriterion& c,
-                       double tolerance = 0.005);
+                       double tolerance = stability_tolerance);
 
 // The Jacobian of one step of `scheme` about the scene's equilibrium (its initial state at
 // rest), by central differences. State per body: position, velocity, rotation vector
@@ -64,7 +75,7 @@ double spectral_radius(const Scene& scene, const StepJacobian& jacobian);
 
 // The dt where rho(dt)^(2 horizon/dt) reaches `growth`, by the same bracketing and bisection.
 double amplification_limit(const Scene& scene, const std::string& scheme, double dt_guess, const StabilityCriterion& c,
-                           double tolerance = 0.005);
+                           double tolerance = stability_tolerance);
 
 // rho > 1 + 1e-6 at dt = dt_small: unstable however small the step (in the linearisation).
 // 1e-6 is two orders above the finite-difference noise of rho (~1e-8).

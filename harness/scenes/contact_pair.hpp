@@ -14,6 +14,10 @@
 #include "references/critical_time_step.hpp"
 #include "schemes/quaternion.hpp"
 
+#include <string>
+#include <utility>
+#include <vector>
+
 namespace rotbench {
 
 class ContactPairScene : public Scene, public StabilityProbe {
@@ -48,6 +52,14 @@ public:
     double a_max() const { return a_max_; }
     // Seed 004's prediction for this contact: eq. 46 (eq. 47 when undamped).
     double predicted_limit() const override { return peng::damped(stiffness_, damping_, a_max_); }
+    // The scene as a client reads it (harness/exec/contact_client.hpp): the bodies' shape, the
+    // touching points in the body frames and the law, in physical terms.
+    struct Shape {
+        std::string kind;          // "sphere" (size: radius) or "ellipsoid" (size: semi-axes along body x, y, z)
+        std::vector<double> size;  // m
+    };
+    const Shape& shape() const { return shape_; }
+    const Vec3& anchor(std::size_t body) const { return body == 0 ? anchor1_ : anchor2_; }
     // The period of the fastest contact mode Peng's analysis assumes, 2 pi / sqrt(k A_max).
     double period() const override { return 2.0 * 3.141592653589793 / std::sqrt(stiffness_ * a_max_); }
     bool linearisable_at_rest() const override { return true; }
@@ -57,7 +69,8 @@ public:
 protected:
     // For the derived scene's prepare(): the bodies (body 2 placed along +x), the anchors
     // (the touching points, body frames) and A_max for the damping ratio.
-    void set_pair(double mass, const Vec3& inertia, double half_length, const Quat& q2, double gap_axis_length) {
+    void set_pair(Shape shape, double mass, const Vec3& inertia, double half_length, const Quat& q2, double gap_axis_length) {
+        shape_ = std::move(shape);
         mass_ = mass;
         inertia_ = inertia;
         q2_ = q2;
@@ -95,6 +108,7 @@ private:
     double mass_ = 0, stiffness_ = 0, damping_ = 0, a_max_ = 0, separation_ = 0;
     Vec3 inertia_, anchor1_, anchor2_;
     Quat q2_;
+    Shape shape_;
 
     double spring_energy(const Bodies& b) const {
         const Vec3 u = (b.position[1] + to_world(b.orientation[1], anchor2_)) - (b.position[0] + to_world(b.orientation[0], anchor1_));

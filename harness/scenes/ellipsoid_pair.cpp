@@ -21,7 +21,7 @@ public:
         const double m = params.positive("density") * 4.0 / 3.0 * std::numbers::pi * s.prod();
         const Vec3 inertia = m / 5.0 * Vec3(s.y() * s.y() + s.z() * s.z(), s.x() * s.x() + s.z() * s.z(),
                                             s.x() * s.x() + s.y() * s.y());
-        set_pair(m, inertia, s.x(), Quat(Eigen::AngleAxisd(std::numbers::pi / 2.0, Vec3::UnitX())), 2.0 * s.x());
+        set_pair({"ellipsoid", {s.x(), s.y(), s.z()}}, m, inertia, s.x(), Quat(Eigen::AngleAxisd(std::numbers::pi / 2.0, Vec3::UnitX())), 2.0 * s.x());
     }
     std::vector<double> default_dts() const override { return halving_ladder(4e-4, 5); }
     std::vector<double> quick_dts() const override { return halving_ladder(4e-4, 3); }

@@ -32,7 +32,11 @@ public:
         omega_ = params.number("omega");
         params.require(omega_ >= 0.0, "omega", "must not be negative");
         const double a = std::sqrt(a2);
-        set_pair(mass_, i, a, Quat(Eigen::AngleAxisd(std::numbers::pi / 2.0, Vec3::UnitX())), 2.0 * a);
+        // A client sees the ellipsoid of these moments, where one exists.
+        const double b2 = 5.0 * (i.x() + i.z() - i.y()) / (2.0 * mass_), c2 = 5.0 * (i.x() + i.y() - i.z()) / (2.0 * mass_);
+        Shape shape{"moments", {}};
+        if (b2 > 0.0 && c2 > 0.0) shape = {"ellipsoid", {a, std::sqrt(b2), std::sqrt(c2)}};
+        set_pair(shape, mass_, i, a, Quat(Eigen::AngleAxisd(std::numbers::pi / 2.0, Vec3::UnitX())), 2.0 * a);
     }
     Bodies initial_state() const override {
         Bodies b = ContactPairScene::initial_state();

@@ -18,7 +18,7 @@ public:
     void prepare() override {
         const double r = params.positive("radius");
         const double m = params.positive("density") * 4.0 / 3.0 * std::numbers::pi * r * r * r;
-        set_pair(m, Vec3::Constant(0.4 * m * r * r), r, Quat::Identity(), 2.0 * r);
+        set_pair({"sphere", {r}}, m, Vec3::Constant(0.4 * m * r * r), r, Quat::Identity(), 2.0 * r);
     }
     std::vector<double> default_dts() const override { return halving_ladder(1e-4, 5); }
     std::vector<double> quick_dts() const override { return halving_ladder(1e-4, 3); }
