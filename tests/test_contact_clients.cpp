@@ -141,3 +141,26 @@ TEST_CASE("contact clients: the stability plan searches a client only, on the sc
     CHECK_THAT(skipped[0], Catch::Contains("fast_spin"));
     fs::remove_all(dir);
 }
+
+TEST_CASE("contact clients: LAMMPS's gran/hooke/history under nve/sphere has direct's limits on sphere_pair at four damping ratios",
+          "[slow]") {
+    // Debian's lammps (./setup.sh test installs it); about two minutes. Both are velocity Verlet
+    // on the same linear law, checked by benchmarks/contact_frequencies.py (docs/findings.md).
+    const std::string id = load_client(std::string(ROTBENCH_SOURCE_DIR) + "/examples/clients/lammps/contact.toml");
+    for (double zeta : {0.0, 0.1, 0.3, 0.5}) {
+        const RunResult r = made(search(id, zeta));
+        INFO("zeta " << zeta << ": " << r.failure);
+        REQUIRE(r.failure.empty());
+        const auto scene = make_scene("sphere_pair", {{"zeta", {zeta}}});
+        const auto& pair = dynamic_cast<const ContactPairScene&>(*scene);
+        const double direct = empirical_limit(pair, "direct", pair.predicted_limit(), stability_criterion(pair));
+        CHECK(std::abs(r.value(metric::dt_empirical) - direct) <= 2.0 * stability_tolerance * direct);
+    }
+    // A body LAMMPS cannot make a sphere of is declined (exit 3), not failed.
+    const fs::path dir = fresh_dir("lammps_contact_ellipsoids");
+    fs::create_directories(dir);
+    write(dir / "scene.json", client_scene_json(*make_scene("ellipsoid_pair"), {"ellipsoid_pair", id, 4e-4, 0.0}, 0.004, 10));
+    CHECK(run_program({"/usr/bin/env", "-C", dir.string(), "python3", std::string(ROTBENCH_SOURCE_DIR) + "/examples/clients/lammps/lammps_contact.py",
+                       "scene.json", "trajectory.csv"}) == 3);
+    fs::remove_all(dir);
+}
