@@ -8,9 +8,9 @@ normal spring k_n and a tangential one k_t (seed 004, eq. 29), the relative disp
 touching points moves in two modes only: along the normal at sqrt(2 k_n / m), and across it at
 sqrt(k_t A) with A = 1/m1 + 1/m2 + r1^2/I1 + r2^2/I2 = 7/m (the rotations take part); every other
 mode leaves the contact unstretched. Each component of the displacement is then one sinusoid,
-whose period is read from its zero crossings (interpolated) over the run. Damped (zeta = 0.1 here),
-each mode's amplitude decays as exp(-c A t / 2) with c the scene's dashpot and A = 2/m across
-the normal, 7/m across it: the rate is fitted to the log of sqrt(u^2 + (u'/w)^2) by least squares.
+whose period is read from the zero crossings (interpolated) of its rate over the run. Damped
+(zeta = 0.1 here), each mode decays as exp(-c A t / 2) with c the scene's dashpot and A = 2/m along
+the normal, 7/m across it: the rate is fitted to the log of the rate's peaks by least squares.
 
 usage: contact_frequencies.py ROTBENCH CLIENT.toml [more client files]
 Runs each client's program as rotbench would (`rotbench client scene`, then the program on it, in
@@ -66,19 +66,20 @@ def measure(rotbench, client_file):
     law = spec["contact"]
     times = [row[0] for row in motion]
     found = {}
-    for mode, column, k in (("normal", 1, law["normal_stiffness"]), ("across", 3, law["tangential_stiffness"])):
+    # From the relative velocity, whose mean is nil whatever static offset a code's tangential
+    # history keeps from the material points' displacement.
+    for mode, column, k in (("normal", 2, law["normal_stiffness"]), ("across", 4, law["tangential_stiffness"])):
         w = 2 * math.pi / crossings_period(times, [row[column] for row in motion])
         found[mode] = [w, math.sqrt(k * inverse[mode])]
-    # The damping at zeta = 0.1: each mode's amplitude sqrt(u^2 + (u'/w)^2) decays as exp(-c / (2 mu) t).
+    # The damping at zeta = 0.1: the peaks of |u'| decay as exp(-c / (2 mu) t); fitted while they
+    # are above 1/20 of the first (below, the constant that rolling adds where a code's contact
+    # point is not the scene's touching point, as LIGGGHTS's, would bias it).
     spec, motion = contact_motion(rotbench, program, 0.1)
     law = spec["contact"]
-    for mode, column, c in (("normal", 1, law["normal_damping"]), ("across", 3, law["tangential_damping"])):
-        w = found[mode][1]
-        amplitude = [math.log(math.hypot(row[column], row[column + 1] / w)) for row in motion]
-        # Fitted while the amplitude is above 1e-3 of its start: below, the rounding of the
-        # displacement (positions of order 1 m) and second-order terms take over.
-        kept = [(t, a) for t, a in zip(times, amplitude) if a > amplitude[0] - math.log(1e3)]
-        found[mode] += [-slope(*zip(*kept)), 0.5 * c * inverse[mode]]
+    for mode, column, c in (("normal", 2, law["normal_damping"]), ("across", 4, law["tangential_damping"])):
+        v = [abs(row[column]) for row in motion]
+        peaks = [(times[n], math.log(v[n])) for n in range(1, len(v) - 1) if v[n - 1] < v[n] >= v[n + 1] and v[n] > 0.05 * max(v)]
+        found[mode] += [-slope(*zip(*peaks)), 0.5 * c * inverse[mode]]
     return client["id"], found
 
 

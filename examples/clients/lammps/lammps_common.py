@@ -1,5 +1,5 @@
 """What the LAMMPS adapters share (docs/clients.md): rotations, a scene's torque at an orientation
-(also for the callback lammps_asphere.py hands LAMMPS), running `lmp` and reading its dump.
+(also for the callback lammps_asphere.py hands LAMMPS), running `lmp` (or `liggghts`) and reading its dump.
 Python 3 stdlib only."""
 import subprocess
 import sys
@@ -28,13 +28,16 @@ def torque_of(q, law):  # the scene's torque (scene.json's "torque") at orientat
     return [0.0, 0.0, 0.0]
 
 
-def run_lmp(lines):  # writes the input script and runs lmp on it; on failure exits with its last words (MPI's and LAMMPS's errors)
+def run_lmp(lines, code="lammps"):  # writes the input script and runs lmp (or LIGGGHTS) on it; on failure exits with its last words
     open("in.rotbench", "w").write("\n".join(lines) + "\n")
-    lammps = subprocess.run(["lmp", "-in", "in.rotbench", "-log", "none", "-nocite"], stderr=subprocess.PIPE, stdout=subprocess.PIPE,
-                            text=True)
+    program = ["lmp", "-nocite"] if code == "lammps" else ["liggghts", "-echo", "none"]
+    # Line-buffered: an MPI abort would otherwise lose the error line still in the buffer.
+    lammps = subprocess.run(["stdbuf", "-oL"] + program + ["-in", "in.rotbench", "-log", "none"], stderr=subprocess.PIPE,
+                            stdout=subprocess.PIPE, text=True, errors="replace")
     if lammps.returncode != 0:
         said = [line.strip() for line in (lammps.stdout + lammps.stderr).splitlines() if line.strip()]
-        sys.exit("lmp exited with status %d: %s" % (lammps.returncode, " | ".join(said[-3:]) or "nothing said"))
+        errors = [line for line in said if line.startswith("ERROR")]
+        sys.exit("%s exited with status %d: %s" % (program[0], lammps.returncode, " | ".join(errors[-1:] or said[-3:]) or "nothing said"))
 
 
 def dump_frames(path, atoms):  # (step, one list of numbers per atom) for each frame of a custom dump

@@ -1,0 +1,114 @@
+#!/usr/bin/env python3
+"""rotbench client adapter for a contact of two spheres in Yade (docs/clients.md, "Contact scenes"):
+Law2_ScGeom_ViscElPhys_Basic, Yade's linear spring-dashpot, under NewtonIntegrator.
+
+usage: yade_contact.py scene.json trajectory.csv
+
+The spheres are ViscElMat with kn, ks, cn, cs given explicitly; Yade joins two materials' values as
+springs in series (1 / (1/a + 1/b)), so each sphere's are twice the scene's. The friction angle is
+atan(1e4), far above any tangential force here. As in LAMMPS's adapter the bond is made by a
+preload: each sphere is pulled toward the other along the line of their centres by F0 (a PyRunner
+adds it every step, before the integrator), held by an overlap F0 / k_n 3000 times the
+perturbation's amplitude. Yade puts the contact point in the middle of the overlap, so each sphere
+is made larger by half the overlap at the scene's own position: the contact point is then the
+scene's touching point, r from each centre, and the moments are set as given (a sphere shifted
+into the overlap instead would turn on a lever r - overlap/2: the tangential frequency 0.07 % low,
+measured).
+
+Yade's leapfrog keeps velocities at half steps; a PyRunner after the contact law and before the
+integrator writes each step's row with the whole-step values v(t) = v(t - dt/2) + dt/2 F(t) / m (and
+so for w), and at the first step sets v(-dt/2) = v0 - dt/2 F(0) / m. The orientation is Yade's own.
+Python 3 stdlib only; the Yade script and its output stay in the current directory.
+"""
+import json
+import math
+import os
+import shutil
+import subprocess
+import sys
+
+spec_path, out_path = sys.argv[1], sys.argv[2]
+spec = json.load(open(spec_path))
+bodies, contact = spec["bodies"], spec["contact"]
+for b in bodies:
+    if b["shape"]["kind"] != "sphere":
+        print("yade_contact.py: a ViscElMat contact here is between spheres, not a body of kind '%s'" % b["shape"]["kind"], file=sys.stderr)
+        sys.exit(3)
+if contact["normal"] != [1.0, 0.0, 0.0] or any(abs(b["position"][1]) + abs(b["position"][2]) > 0 for b in bodies):
+    print("yade_contact.py: the spheres must touch along x", file=sys.stderr)
+    sys.exit(3)
+
+# The preload as in lammps_contact.py: an overlap 3000 times the perturbation's amplitude.
+radii = [b["shape"]["size"][0] for b in bodies]
+meff = bodies[0]["mass"] * bodies[1]["mass"] / (bodies[0]["mass"] + bodies[1]["mass"])
+rel = [bodies[1]["velocity"][k] - bodies[0]["velocity"][k] for k in range(3)]
+spin = [abs(bodies[0]["omega_world"][k]) * radii[0] + abs(bodies[1]["omega_world"][k]) * radii[1] for k in range(3)]
+stiffness = min(contact["normal_stiffness"], contact["tangential_stiffness"])
+overlap = 3000.0 * (math.sqrt(sum(v * v for v in rel)) + math.sqrt(sum(s * s for s in spin))) / math.sqrt(stiffness / meff)
+if overlap > 0.01 * min(radii):
+    print("yade_contact.py: the preload's overlap would be more than 1 % of a radius", file=sys.stderr)
+    sys.exit(3)
+
+script = r'''
+import json
+import math
+import os
+open("yade_tmp", "w").write(os.path.dirname(O.tmpFilename()))  # Yade's own temporary folder, for removal
+spec = json.load(open(%(spec)r))
+overlap = %(overlap)r
+dt, steps, law = spec["dt"], spec["steps"], spec["contact"]
+pull = law["normal_stiffness"] * overlap
+ids = []
+for i, b in enumerate(spec["bodies"]):
+    mat = O.materials.append(ViscElMat(kn=2 * law["normal_stiffness"], ks=2 * law["tangential_stiffness"], cn=2 * law["normal_damping"],
+                                       cs=2 * law["tangential_damping"], frictionAngle=math.atan(1e4), density=1000))
+    p = b["position"]
+    s = utils.sphere(tuple(p), b["shape"]["size"][0] + 0.5 * overlap, material=mat)
+    ids.append(O.bodies.append(s))
+    s.state.mass = b["mass"]
+    s.state.inertia = Vector3(*b["inertia_body"])
+    s.state.ori = Quaternion(*b["q0"])
+    s.state.vel = Vector3(*b["velocity"])
+    s.state.angVel = Vector3(*b["omega_world"])
+out = open(%(out)r, "w")
+out.write(spec["columns"] + "\n")
+
+
+def step():
+    n = O.iter
+    a, b = O.bodies[ids[0]].state, O.bodies[ids[1]].state
+    d = b.pos - a.pos
+    O.forces.addF(ids[0], pull / d.norm() * d)
+    O.forces.addF(ids[1], -pull / d.norm() * d)
+    for i, body in enumerate((a, b)):
+        f, t = O.forces.f(ids[i]), O.forces.t(ids[i])
+        inertia = body.inertia
+        if n == 0:  # the leapfrog's start: v(-dt/2), w(-dt/2)
+            body.vel = body.vel - 0.5 * dt * f / body.mass
+            body.angVel = body.angVel - 0.5 * dt * Vector3(t[0] / inertia[0], t[1] / inertia[1], t[2] / inertia[2])
+        v = body.vel + 0.5 * dt * f / body.mass
+        w = body.angVel + 0.5 * dt * Vector3(t[0] / inertia[0], t[1] / inertia[1], t[2] / inertia[2])
+        q = body.ori
+        out.write(",".join(repr(float(c)) for c in [n * dt, i, body.pos[0], body.pos[1], body.pos[2], v[0], v[1], v[2], q[3], q[0], q[1], q[2], w[0], w[1], w[2]]) + "\n")
+
+
+O.engines = [ForceResetter(), InsertionSortCollider([Bo1_Sphere_Aabb()]),
+             InteractionLoop([Ig2_Sphere_Sphere_ScGeom()], [Ip2_ViscElMat_ViscElMat_ViscElPhys()], [Law2_ScGeom_ViscElPhys_Basic()]),
+             PyRunner(command="step()", iterPeriod=1, initRun=True),
+             NewtonIntegrator(gravity=(0, 0, 0), damping=0)]
+O.dt = dt
+O.run(steps + 1, True)
+out.close()
+''' % {"spec": spec_path, "overlap": overlap, "out": out_path}
+open("rotbench_yade.py", "w").write(script)
+# Yade keeps an IPython profile (IPYTHONDIR, else ~/.ipython): in the scratch directory, which
+# rotbench removes; the /tmp/yade-XXXXXX it makes whatever TMPDIR says is named by the script and
+# removed here.
+env = dict(os.environ, IPYTHONDIR=os.path.join(os.getcwd(), "ipython"))
+try:
+    subprocess.run(["yade", "-n", "-x", "rotbench_yade.py"], check=True, stdout=subprocess.DEVNULL, env=env)
+finally:
+    if os.path.exists("yade_tmp"):
+        folder = open("yade_tmp").read()
+        if os.path.basename(folder).startswith("yade-") and os.path.isdir(folder):
+            shutil.rmtree(folder)
