@@ -142,17 +142,17 @@ TEST_CASE("contact clients: the stability plan searches a client only, on the sc
     fs::remove_all(dir);
 }
 
-TEST_CASE("contact clients: LAMMPS's, LIGGGHTS's and Yade's linear contacts have direct's limits on sphere_pair at four damping "
-          "ratios",
+TEST_CASE("contact clients: LAMMPS's, LIGGGHTS's and Yade's linear contacts have direct's limits on sphere_pair, undamped and damped",
           "[slow]") {
-    // Debian's lammps, liggghts and yade (./setup.sh test installs them); about six minutes. All
+    // Debian's lammps, liggghts and yade (./setup.sh test installs them); about three minutes, at
+    // two of the study's four damping ratios (docs/findings.md has all four). All
     // are velocity Verlet (Yade's leapfrog is the same map) on the same linear law, as
     // benchmarks/contact_frequencies.py checks (docs/findings.md); LIGGGHTS's shorter lever arm
     // (0.07 % off in frequency) and Yade's first shear increment are far inside the search's bracket.
     for (const char* file :
          {"/examples/clients/lammps/contact.toml", "/examples/clients/liggghts/contact.toml", "/examples/clients/yade/contact.toml"}) {
         const std::string id = load_client(std::string(ROTBENCH_SOURCE_DIR) + file);
-        for (double zeta : {0.0, 0.1, 0.3, 0.5}) {
+        for (double zeta : {0.0, 0.5}) {
             const RunResult r = made(search(id, zeta));
             INFO(id << " zeta " << zeta << ": " << r.failure);
             REQUIRE(r.failure.empty());
