@@ -209,6 +209,8 @@ def run(spec_path, out_path, rotational, translational):
             v, w = node.GetSolutionStepValue(KM.VELOCITY), node.GetSolutionStepValue(KM.ANGULAR_VELOCITY)
             n = index[element.Id]
             rows.append((n, [node.X, node.Y, node.Z, q.W, q.X, q.Y, q.Z, v[0], v[1], v[2], w[0], w[1], w[2]]))
+        if not rows:  # every stone has left the domain: the time alone
+            out.write(g(k * dt) + "\n")
         for n, r in sorted(rows):
             out.write("%s,%d,%d,%s\n" % (g(k * dt), n, stones[n][0], ",".join(g(c) for c in r)))
 
