@@ -22,10 +22,10 @@ Python 3 stdlib only; the Yade script and its output stay in the current directo
 """
 import json
 import math
-import os
-import shutil
-import subprocess
 import sys
+
+sys.dont_write_bytecode = True  # nothing left beside the adapter
+from yade_common import NAME_TMP, run_yade
 
 spec_path, out_path = sys.argv[1], sys.argv[2]
 spec = json.load(open(spec_path))
@@ -49,11 +49,9 @@ if overlap > 0.01 * min(radii):
     print("yade_contact.py: the preload's overlap would be more than 1 % of a radius", file=sys.stderr)
     sys.exit(3)
 
-script = r'''
+script = NAME_TMP + r'''
 import json
 import math
-import os
-open("yade_tmp", "w").write(os.path.dirname(O.tmpFilename()))  # Yade's own temporary folder, for removal
 spec = json.load(open(%(spec)r))
 overlap = %(overlap)r
 dt, steps, law = spec["dt"], spec["steps"], spec["contact"]
@@ -100,15 +98,4 @@ O.dt = dt
 O.run(steps + 1, True)
 out.close()
 ''' % {"spec": spec_path, "overlap": overlap, "out": out_path}
-open("rotbench_yade.py", "w").write(script)
-# Yade keeps an IPython profile (IPYTHONDIR, else ~/.ipython): in the scratch directory, which
-# rotbench removes; the /tmp/yade-XXXXXX it makes whatever TMPDIR says is named by the script and
-# removed here.
-env = dict(os.environ, IPYTHONDIR=os.path.join(os.getcwd(), "ipython"))
-try:
-    subprocess.run(["yade", "-n", "-x", "rotbench_yade.py"], check=True, stdout=subprocess.DEVNULL, env=env)
-finally:
-    if os.path.exists("yade_tmp"):
-        folder = open("yade_tmp").read()
-        if os.path.basename(folder).startswith("yade-") and os.path.isdir(folder):
-            shutil.rmtree(folder)
+run_yade(script)

@@ -14,20 +14,18 @@ leapfrog's half-step values are put at whole steps: Yade starts from L(-dt/2) = 
 stdlib only; the Yade script and its output stay in the current directory.
 """
 import json
-import os
-import shutil
-import subprocess
 import sys
+
+sys.dont_write_bytecode = True  # nothing left beside the adapter
+from yade_common import NAME_TMP, run_yade
 
 mode, spec_path, out_path = sys.argv[1], sys.argv[2], sys.argv[3]
 spec = json.load(open(spec_path))
 if spec["torque"]["law"] not in ("none", "body_constant", "dipole"):
     sys.exit("yade_newton.py: Yade cannot take the torque law '%s' here" % spec["torque"]["law"])
 
-script = r'''
+script = NAME_TMP + r'''
 import json
-import os
-open("yade_tmp", "w").write(os.path.dirname(O.tmpFilename()))  # Yade's own temporary folder, for removal
 spec = json.load(open(%(spec)r))
 exact = %(exact)r
 dt, inertia, law = spec["dt"], spec["inertia_body"], spec["torque"]
@@ -88,15 +86,4 @@ O.dt = dt
 O.run(spec["steps"], True)
 out.close()
 ''' % {"spec": spec_path, "exact": mode == "exact", "out": out_path}
-open("rotbench_yade.py", "w").write(script)
-# Yade keeps an IPython profile (IPYTHONDIR, else ~/.ipython): in the scratch directory, which
-# rotbench removes. It also makes /tmp/yade-XXXXXX whatever TMPDIR says, and leaves it: the script
-# names it, and it is removed here.
-env = dict(os.environ, IPYTHONDIR=os.path.join(os.getcwd(), "ipython"))
-try:
-    subprocess.run(["yade", "-n", "-x", "rotbench_yade.py"], check=True, stdout=subprocess.DEVNULL, env=env)
-finally:
-    if os.path.exists("yade_tmp"):
-        folder = open("yade_tmp").read()
-        if os.path.basename(folder).startswith("yade-") and os.path.isdir(folder):
-            shutil.rmtree(folder)
+run_yade(script)
