@@ -4,12 +4,10 @@
 #include "harness/exec/granular_client.hpp"
 #include "harness/exec/run_kinds.hpp"
 #include "harness/store/client.hpp"
-#include "harness/store/csv.hpp"
 #include "harness/store/parse.hpp"
 #include "harness/store/output_files.hpp"
 #include "schemes/quaternion.hpp"
 
-#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>

@@ -25,10 +25,10 @@ std::string client_scene_json(const Scene& scene, const RunSpec& spec, double t_
 
 // Runs of kind trajectory and horizon (on a granular scene, trajectory only: the program runs the
 // scene itself and writes samples of its stones, harness/exec/granular_client.hpp; on a contact
-// scene, trajectory and stability: the search of a built-in's, each trial one run of the
-// program, harness/exec/contact_client.hpp); any other
-// kind, a scene the client file does not list, a program that fails, hangs or writes a
-// trajectory that is malformed, short, or not finite is a failed run saying which; one that exits
+// scene, also stability: a built-in's search, each trial one run of the program,
+// harness/exec/contact_client.hpp); any other kind, a scene the client file does not list, a
+// program that fails, hangs or writes a trajectory that is malformed, short, or (but on a contact
+// scene, where that is a blow-up) not finite is a failed run saying which; one that exits
 // with client_declines declined it. The built-ins' timing metrics are not measured: every run
 // records its program's own CPU and wall time instead.
 RunResult run_client(const RunSpec& spec, const RunOptions& options, const IsolationLimits& limits);
