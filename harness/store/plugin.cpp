@@ -8,6 +8,8 @@
 #include "harness/store/parse.hpp"
 
 #include <algorithm>
+#include <fstream>
+#include <string_view>
 #include <cctype>
 #include <cstdint>
 #include <dlfcn.h>
@@ -48,6 +50,10 @@ std::vector<std::string> load_plugin(const std::string& path) {
     const std::string where = "--plugin " + path;
     if (!std::filesystem::exists(path)) throw InputError(where + ": no such file");
     if (!std::filesystem::is_regular_file(path)) throw InputError(where + ": not a regular file");
+    // Its first bytes before all of them: a file of gigabytes that is no library is refused at once.
+    char magic[4] = {};
+    std::ifstream(path, std::ios::binary).read(magic, sizeof magic);
+    if (std::string_view(magic, 4) != "\x7f" "ELF") throw InputError(where + ": not a shared library (no ELF header)");
     Fnv1a bytes;
     if (!feed_file(path, bytes)) throw InputError(where + ": cannot read the file");
     // The same file again (a long-lived process, or the option given twice): already loaded.
