@@ -531,3 +531,13 @@ TEST_CASE("clients: the Yade adapter leaves nothing outside its working director
     CHECK(fs::is_empty(dir / "home"));
     fs::remove_all(dir);
 }
+
+TEST_CASE("clients: control characters in a client file's words do not reach the terminal through `list`") {
+    const fs::path dir = fresh_dir("client_controls");
+    const fs::path file = client_file(dir, "client_controls", "no_squish", "", "claims = \"no_squish\"\nsummary = \"a\\u001b[2Jb\"\n");
+    const Cli r = cli({"--client", file.string(), "list"});
+    REQUIRE(r.status == 0);
+    CHECK(r.out.find('\x1b') == std::string::npos);
+    CHECK_THAT(r.out, Catch::Contains("a\\x1B[2Jb"));
+    fs::remove_all(dir);
+}

@@ -2,6 +2,7 @@
 #include "harness/cli/verb.hpp"
 #include "harness/core/metrics.hpp"
 #include "harness/scenes/scene.hpp"
+#include "reports/escape.hpp"
 #include "schemes/scheme.hpp"
 
 #include <algorithm>
@@ -45,7 +46,8 @@ void list(std::ostream& out) {
     out << "schemes:\n";
     for (const auto& id : schemes.ids()) {
         const auto& e = schemes.at(id, "scheme");
-        out << fmt::format("  {:<{}} {}\n  {:<{}} ({})\n", id, width, e.summary, "", width, e.source);
+        // A plug-in's or client's words: no control character reaches the terminal.
+        out << fmt::format("  {:<{}} {}\n  {:<{}} ({})\n", id, width, terminal_line(e.summary), "", width, terminal_line(e.source));
     }
     out << "scenes:\n";
     for (const auto& id : scenes.ids()) {
@@ -55,11 +57,6 @@ void list(std::ostream& out) {
         for (double dt : scene->default_dts()) dts += fmt::format("{}{:g}", dts.empty() ? "" : ",", dt);
         out << fmt::format("  {:<{}} {}\n  {:<{}} (t_end {:g} s, dt {})\n", id, width, e.summary, "", width, scene->t_end(), dts);
     }
-}
-
-std::string cell(std::string text) {  // a Markdown table cell: no '|' of its own
-    for (std::size_t at = text.find('|'); at != std::string::npos; at = text.find('|', at + 2)) text.replace(at, 1, "\\|");
-    return text;
 }
 
 // docs/ids.md: every scheme with its claims, every scene with its keys (tests/test_docs.cpp
@@ -79,7 +76,7 @@ void list_markdown(std::ostream& out) {
         if (c.bounded_energy) also.push_back("bounded energy");
         if (c.time_reversible) also.push_back("time-reversible");
         const auto order = [](const OrderClaim& o) { return o.order > 0 ? std::to_string(o.order) : std::string("—"); };
-        out << fmt::format("| `{}` | {} | {} | {} | {} | {} |\n", id, cell(e.summary), cell(e.source), order(c.without_torque),
+        out << fmt::format("| `{}` | {} | {} | {} | {} | {} |\n", id, markdown_cell(e.summary), markdown_cell(e.source), order(c.without_torque),
                            order(c.with_torque), join(also, ", "));
     }
     out << "\n## Scenes\n\nEach key is set with `--set SCENE.KEY=VALUE` or in a `[SCENE]` table of a config; vectors are "
@@ -96,7 +93,7 @@ void list_markdown(std::ostream& out) {
         for (const auto& p : scene->params.entries()) {
             std::string value;
             for (double v : p.value) value += fmt::format("{}{}", value.empty() ? "" : ", ", v);
-            out << fmt::format("| `{}` | {} | {} | {} |\n", p.key, value, p.unit, cell(p.help));
+            out << fmt::format("| `{}` | {} | {} | {} |\n", p.key, value, p.unit, markdown_cell(p.help));
         }
     }
 }
