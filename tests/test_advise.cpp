@@ -2,6 +2,7 @@
 // others, and bad input is refused before any work.
 #include "cli_helpers.hpp"
 #include "harness/analysis/advice.hpp"
+#include "harness/scenes/stability_probe.hpp"
 
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -164,4 +165,14 @@ TEST_CASE("advise says what limits dt: the contact for the damped ballast stone,
         CHECK(rec["stability_over_peng"].get<double>() == Approx(rec["dt_stability"].get<double>() / json["dt_peng"].get<double>()));
     }
     fs::remove_all(dir);
+}
+
+TEST_CASE("advise: a particle too light to be a body ends in bounded time: its references stop at their step budget") {
+    // 1e-300 kg with moments of order 1: an ellipsoid 1e150 m long, contact periods of 1e-153 s;
+    // the Odeint reference of such a run took hours before it had a budget of steps.
+    const ParamOverrides particle = {{"mass", {1e-300}}, {"stiffness", {1e6}}, {"inertia", {1.0, 2.0, 3.0}}};
+    const auto scene = make_scene("particle_contact", particle);
+    const double period = dynamic_cast<const StabilityProbe&>(*scene).period();  // advise's duration: 20 of them
+    const RunResult r = made({"particle_contact", "direct", scene->quick_dts().front(), 20.0 * period, particle});
+    CHECK_THAT(r.failure, Catch::Contains("Odeint reference: more than") && Catch::Contains("too stiff or too ill-scaled"));
 }

@@ -5,6 +5,7 @@
 #include <atomic>
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <new>
 #include <stdexcept>
 #include <thread>
 
@@ -47,13 +48,22 @@ TEST_CASE("a reference trajectory is computed once per key, even when runs ask f
     CHECK(computed == 2);
 }
 
-TEST_CASE("a reference that fails to compute is not kept: the caller gets the error, a later run tries again") {
+TEST_CASE("a reference that fails by the scene is kept failed; one that ran out of memory is tried again") {
     int attempts = 0;
     const auto failing = [&]() -> Trajectory {
         ++attempts;
-        throw std::runtime_error("no progress");
+        throw std::runtime_error("more than 100 steps");
     };
-    CHECK_THROWS_WITH(shared_trajectory("test|fails", failing), "no progress");
-    CHECK_THROWS_WITH(shared_trajectory("test|fails", failing), "no progress");
-    CHECK(attempts == 2);
+    // The same key fails the same way: every other scheme's run gets the error at once.
+    CHECK_THROWS_WITH(shared_trajectory("test|fails", failing), "more than 100 steps");
+    CHECK_THROWS_WITH(shared_trajectory("test|fails", failing), "more than 100 steps");
+    CHECK(attempts == 1);
+    int tries = 0;
+    const auto out_of_memory = [&]() -> Trajectory {
+        ++tries;
+        throw std::bad_alloc();
+    };
+    CHECK_THROWS_AS(shared_trajectory("test|memory", out_of_memory), std::bad_alloc);
+    CHECK_THROWS_AS(shared_trajectory("test|memory", out_of_memory), std::bad_alloc);
+    CHECK(tries == 2);
 }

@@ -1,10 +1,27 @@
 #include "harness/exec/shared_trajectory.hpp"
 
+#include "harness/exec/interrupt.hpp"
+
+#include <exception>
 #include <future>
+#include <new>
 #include <map>
 #include <mutex>
 
 namespace rotbench {
+namespace {
+
+bool out_of_memory(const std::exception_ptr& failure) {
+    try {
+        std::rethrow_exception(failure);
+    } catch (const std::bad_alloc&) {
+        return true;
+    } catch (...) {
+        return false;
+    }
+}
+
+}  // namespace
 
 std::shared_ptr<const Trajectory> shared_trajectory(const std::string& key, const std::function<Trajectory()>& compute) {
     using Shared = std::shared_future<std::shared_ptr<const Trajectory>>;
@@ -24,9 +41,11 @@ std::shared_ptr<const Trajectory> shared_trajectory(const std::string& key, cons
         try {
             promise.set_value(std::make_shared<const Trajectory>(compute()));
         } catch (...) {
-            // A failure is not kept: the key is forgotten so that a later run tries again, and
-            // the runs waiting now get the exception (each is then recorded as failed).
-            {
+            // The runs waiting now get the exception (each is then recorded as failed). A
+            // failure of the scene's own (a reference past its step budget) is kept, so that
+            // the other schemes' runs fail at once instead of paying for it again; one of the
+            // moment (an interrupt, memory running out) is forgotten, and a later run tries again.
+            if (interrupt_signal() || out_of_memory(std::current_exception())) {
                 std::lock_guard lock(mutex);
                 trajectories.erase(key);
             }

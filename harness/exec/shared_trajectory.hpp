@@ -1,7 +1,8 @@
 // Reference trajectories shared by the runs of one process. Every scheme of a sweep is
 // compared with the same reference at the same steps, so a trajectory is computed once per
 // key (scene, parameters, dt, steps) and handed to every run that asks for it; a run that
-// asks while another is computing it waits for that one instead of repeating the work.
+// asks while another is computing it waits for that one instead of repeating the work. A
+// failure is shared too, unless it came from an interrupt or memory running out.
 #pragma once
 
 #include "references/trajectory.hpp"
