@@ -120,10 +120,10 @@ void integrate_with_events(Controlled& controlled, EquationsOfMotion& system, St
     std::optional<double> event;  // a located crossing, not yet reached
     system.record(y, out);
     std::vector<double> gaps = system.gaps(y);
-    // A budget of steps: a thousand a sample (the stiffest scene here takes a few) and 100,000
+    // A budget of steps: a hundred a sample (the stiffest scene here takes a few) and 100,000
     // more for the contact events; past it the scene is too stiff or too ill-scaled for a
     // reference in bounded time (advise --mass 1e-300 ran for hours).
-    const auto budget = 100000LL + 1000LL * static_cast<long long>(times.size());
+    const auto budget = 100000LL + 100LL * static_cast<long long>(times.size());
     long long attempts = 0;
     for (std::size_t k = 1; k < times.size(); ++k) {
         while (t < times[k]) {
