@@ -48,7 +48,7 @@ TEST_CASE("a reference trajectory is computed once per key, even when runs ask f
     CHECK(computed == 2);
 }
 
-TEST_CASE("a reference that fails by the scene is kept failed; one that ran out of memory is tried again") {
+TEST_CASE("a reference that fails by its scene is kept failed, and one that ran out of memory is tried again") {
     int attempts = 0;
     const auto failing = [&]() -> Trajectory {
         ++attempts;
