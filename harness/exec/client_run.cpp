@@ -1,5 +1,6 @@
 #include "harness/exec/client_run.hpp"
 
+#include "harness/exec/json_vec.hpp"
 #include "harness/exec/contact_client.hpp"
 #include "harness/exec/granular_client.hpp"
 #include "harness/exec/run_kinds.hpp"
@@ -53,7 +54,6 @@ struct Scratch {
     }
 };
 
-nlohmann::ordered_json vec(const Vec3& v) { return {v.x(), v.y(), v.z()}; }
 
 // The states a built-in scheme makes on the scene at the same step, as the rows a program writes.
 std::vector<Row> builtin_rows(const Scene& scene, const std::string& scheme_id, double dt, std::int64_t steps) {
@@ -163,18 +163,18 @@ std::string one_body_scene_json(const Scene& scene, const RunSpec& spec, double 
     const Vec3 inertia = b.inertia[0], w_world = b.omega[0], w_body = to_body(q0, w_world);
     const Vec3 l_body = inertia.cwiseProduct(w_body);
     nlohmann::ordered_json torque = {{"law", law->law}};
-    for (const auto& [name, value] : law->parameters) torque[name] = vec(value);
+    for (const auto& [name, value] : law->parameters) torque[name] = json_vec(value);
     nlohmann::ordered_json params = nlohmann::ordered_json::object();
     for (const auto& [key, values] : spec.params) params[key] = values;
     const nlohmann::ordered_json j = {{"format", "rotbench-client-scene 1"},
                               {"scene", spec.scene},
                               {"mass", b.mass[0]},
-                              {"inertia_body", vec(inertia)},
+                              {"inertia_body", json_vec(inertia)},
                               {"q0", {q0.w(), q0.x(), q0.y(), q0.z()}},
-                              {"omega0_world", vec(w_world)},
-                              {"omega0_body", vec(w_body)},
-                              {"L0_world", vec(to_world(q0, l_body))},
-                              {"L0_body", vec(l_body)},
+                              {"omega0_world", json_vec(w_world)},
+                              {"omega0_body", json_vec(w_body)},
+                              {"L0_world", json_vec(to_world(q0, l_body))},
+                              {"L0_body", json_vec(l_body)},
                               {"torque", torque},
                               {"dt", spec.dt},
                               {"t_end", t_end},

@@ -1,5 +1,6 @@
 #include "harness/exec/contact_client.hpp"
 
+#include "harness/exec/json_vec.hpp"
 #include "schemes/quaternion.hpp"
 
 #include <nlohmann/json.hpp>
@@ -7,7 +8,6 @@
 namespace rotbench {
 namespace {
 
-nlohmann::ordered_json vec(const Vec3& v) { return {v.x(), v.y(), v.z()}; }
 
 // Body i's state from its row at step n (the contact_trajectory_header's columns).
 void set_body(Bodies& b, std::size_t i, const TrajectoryRow& r) {
@@ -39,18 +39,18 @@ std::string contact_scene_json(const ContactPairScene& scene, const RunSpec& spe
     for (std::size_t i = 0; i < b.size(); ++i) {
         const Quat& q = b.orientation[i];
         bodies.push_back({{"mass", b.mass[i]},
-                          {"inertia_body", vec(b.inertia[i])},
+                          {"inertia_body", json_vec(b.inertia[i])},
                           {"shape", {{"kind", scene.shape().kind}, {"size", scene.shape().size}}},
-                          {"position", vec(b.position[i])},
+                          {"position", json_vec(b.position[i])},
                           {"q0", {q.w(), q.x(), q.y(), q.z()}},
-                          {"velocity", vec(b.velocity[i])},
-                          {"omega_world", vec(b.omega[i])},
-                          {"anchor_body", vec(scene.anchor(i))}});
+                          {"velocity", json_vec(b.velocity[i])},
+                          {"omega_world", json_vec(b.omega[i])},
+                          {"anchor_body", json_vec(scene.anchor(i))}});
     }
     // Seed 004 eq. 29 with the damping of eq. 37: F_2 = -(k_n u_n + k_t u_t) - (c_n u'_n + c_t u'_t).
     const nlohmann::ordered_json contact = {{"law", "linear spring-dashpot, bonded"},
-                                            {"normal", vec(Vec3::UnitX())},
-                                            {"point", vec(b.position[0] + to_world(b.orientation[0], scene.anchor(0)))},
+                                            {"normal", json_vec(Vec3::UnitX())},
+                                            {"point", json_vec(b.position[0] + to_world(b.orientation[0], scene.anchor(0)))},
                                             {"normal_stiffness", scene.stiffness()},
                                             {"tangential_stiffness", scene.stiffness()},
                                             {"normal_damping", scene.damping()},

@@ -1,5 +1,6 @@
 #include "harness/exec/granular_client.hpp"
 
+#include "harness/exec/json_vec.hpp"
 #include "harness/granular/wall_faces.hpp"
 #include "harness/store/csv.hpp"
 #include "harness/store/output_files.hpp"
@@ -18,8 +19,7 @@ namespace {
 // it (far along the floor) is gone from later samples, as a DEM code deletes it.
 constexpr double domain_margin = 1.0;
 
-nlohmann::ordered_json vec(const Vec3& v) { return {v.x(), v.y(), v.z()}; }
-nlohmann::ordered_json box(const Eigen::AlignedBox3d& b) { return {vec(b.min()), vec(b.max())}; }
+nlohmann::ordered_json box(const Eigen::AlignedBox3d& b) { return {json_vec(b.min()), json_vec(b.max())}; }
 
 // The box the spheres fill.
 Eigen::AlignedBox3d extent_of(const std::vector<Sphere>& spheres) {
@@ -80,9 +80,9 @@ std::string granular_scene_json(const GranularScene& scene, const RunSpec& spec,
         scene.place_walls(t);
         nlohmann::ordered_json faces = nlohmann::ordered_json::array();
         for (const WallFace& f : wall_faces(system.walls, domain))
-            faces.push_back({{"normal", vec(f.normal)},
+            faces.push_back({{"normal", json_vec(f.normal)},
                              {"friction", f.friction},
-                             {"corners", {vec(f.corners[0]), vec(f.corners[1]), vec(f.corners[2]), vec(f.corners[3])}}});
+                             {"corners", {json_vec(f.corners[0]), json_vec(f.corners[1]), json_vec(f.corners[2]), json_vec(f.corners[3])}}});
         stages.push_back({{"from", t}, {"faces", faces}});
     }
     scene.place_walls(0.0);
@@ -90,7 +90,7 @@ std::string granular_scene_json(const GranularScene& scene, const RunSpec& spec,
     for (const ClusterShape& s : system.shapes()) {
         nlohmann::ordered_json spheres = nlohmann::ordered_json::array();
         for (const Sphere& sphere : s.spheres) spheres.push_back({sphere.centre.x(), sphere.centre.y(), sphere.centre.z(), sphere.radius});
-        shapes.push_back({{"mass", s.mass}, {"inertia_body", vec(s.inertia)}, {"spheres", spheres}});
+        shapes.push_back({{"mass", s.mass}, {"inertia_body", json_vec(s.inertia)}, {"spheres", spheres}});
     }
     const ContactMaterial& m = scene.material();
     nlohmann::ordered_json params = nlohmann::ordered_json::object();
@@ -98,7 +98,7 @@ std::string granular_scene_json(const GranularScene& scene, const RunSpec& spec,
     const SampleSteps samples = granular_sample_steps(scene, spec.dt);
     const nlohmann::ordered_json j = {{"format", "rotbench-granular-scene 1"},
                               {"scene", spec.scene},
-                              {"gravity", vec(scene.gravity())},
+                              {"gravity", json_vec(scene.gravity())},
                               {"material",
                                {{"density", scene.params.number("density")},
                                 {"young", m.young},
