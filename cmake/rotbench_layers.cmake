@@ -19,11 +19,23 @@ function(rotbench_include_tree tree)
   endforeach()
 endfunction()
 
-# rotbench_layer(<target> TREE <tree> FOLDERS <folder>... [SOURCES_IN <folder>...] [LINKS <target>...]):
+# Unity builds (docs/performance.md): the files of a layer that computes nothing per step (and of
+# the tests) are compiled 16 to a batch, each batch one translation unit, so that the libraries'
+# headers are parsed and their templates instantiated once a batch rather than once a file.
+# File-local names must therefore differ within such a layer: two alike clash, or one file's
+# overload is chosen in another. Not for the numerical layers: in one large unit GCC inlined less,
+# and `direct` took twice the time per step. ROTBENCH_UNITY=OFF compiles every file alone, as the
+# sanitize preset does, which shows a file that does not compile by itself.
+option(ROTBENCH_UNITY "compile each layer and the tests in unity batches" ON)
+function(rotbench_unity target)
+  set_target_properties(${target} PROPERTIES UNITY_BUILD ${ROTBENCH_UNITY} UNITY_BUILD_BATCH_SIZE 16)
+endfunction()
+
+# rotbench_layer(<target> TREE <tree> FOLDERS <folder>... [SOURCES_IN <folder>...] [LINKS <target>...] [UNITY]):
 # an OBJECT library of every .cpp in the folders (or in SOURCES_IN, subfolders included),
-# seeing its own tree and those of the layers it links.
+# seeing its own tree and those of the layers it links; UNITY: compiled in unity batches.
 function(rotbench_layer target)
-  cmake_parse_arguments(ARG "" "TREE" "FOLDERS;SOURCES_IN;LINKS" ${ARGN})
+  cmake_parse_arguments(ARG "UNITY" "TREE" "FOLDERS;SOURCES_IN;LINKS" ${ARGN})
   rotbench_include_tree(${ARG_TREE} ${ARG_FOLDERS})
   if(NOT ARG_SOURCES_IN)
     set(ARG_SOURCES_IN ${ARG_FOLDERS})
@@ -34,6 +46,9 @@ function(rotbench_layer target)
     list(APPEND sources ${found})
   endforeach()
   add_library(${target} OBJECT ${sources})
+  if(ARG_UNITY)
+    rotbench_unity(${target})
+  endif()
   target_include_directories(${target} PUBLIC ${ROTBENCH_LAYERS_DIR}/${ARG_TREE})
   target_link_libraries(${target} PUBLIC ${ARG_LINKS})
   # An include that climbs ("../x.hpp") is found beside the file, past the include trees: the

@@ -47,12 +47,12 @@ std::string published_for(const std::string& scene, const std::string& metric, c
     return "";
 }
 
-std::string number(double v) { return std::isfinite(v) ? fmt::format("{:.4g}", v) : "—"; }
+std::string value_cell(double v) { return std::isfinite(v) ? fmt::format("{:.4g}", v) : "—"; }
 
 std::string with_interval(const RunResult& r, const std::string& metric) {
     const double mean = r.value(metric), half = r.value(metric + "_ci95");
-    if (!std::isfinite(half)) return number(mean);
-    return number(mean) + " ± " + number(half);
+    if (!std::isfinite(half)) return value_cell(mean);
+    return value_cell(mean) + " ± " + value_cell(half);
 }
 
 std::string difference(const RunResult& r, const std::string& metric) {
@@ -99,8 +99,8 @@ std::string granular_section(const ResultSet& set, const OutputDir& dir) {
                   "| scheme | CPU s per simulated s | rotation's share of a step | seed 000 (Table 4) |\n|---|--:|--:|---|\n";
             for (const RunResult* r : group) {
                 const std::string cost = r->has(metric::client_cpu_seconds_per_simulated_second)
-                                             ? number(r->value(metric::client_cpu_seconds_per_simulated_second)) + " (client)"
-                                             : number(r->value(metric::cpu_seconds_per_simulated_second));
+                                             ? value_cell(r->value(metric::client_cpu_seconds_per_simulated_second)) + " (client)"
+                                             : value_cell(r->value(metric::cpu_seconds_per_simulated_second));
                 md += fmt::format("| {} | {} | {} | {} |\n", r->spec.scheme, cost,
                                   std::isfinite(r->value(metric::rotation_share)) ? fmt::format("{:.1f} %", 100.0 * r->value(metric::rotation_share)) : "—",
                                   published_for(scene.scene, metric::cpu_seconds_per_simulated_second, r->spec.scheme));

@@ -14,7 +14,7 @@ namespace rotbench {
 
 namespace {
 
-std::string number(double v) {
+std::string limit_cell(double v) {
     return std::isnan(v) ? std::string("—") : std::isinf(v) ? std::string("none found") : fmt::format("{:.4e}", v);
 }
 
@@ -130,7 +130,7 @@ std::string stability_section(const std::vector<StabilityRow>& rows, const Resul
     for (const auto& r : rows)
         md += fmt::format("| {} | {} | {} | {} | {} | {} | {} |\n", r.scene,
                           r.omega_max > 0 ? fmt::format("w {:g} rad/s", r.omega_max) : fmt::format("zeta {:g}", r.zeta), r.scheme,
-                          stability_kind(r), number(r.dt_empirical), number(r.dt_amplification), number(r.dt_peng));
+                          stability_kind(r), limit_cell(r.dt_empirical), limit_cell(r.dt_amplification), limit_cell(r.dt_peng));
     md += "\n";
     std::string failures;
     for (const auto& r : rows)

@@ -18,13 +18,13 @@ using namespace rotbench::test;
 
 namespace {
 
-const std::string script = std::string(ROTBENCH_SOURCE_DIR) + "/tests/clients/contact_client.py";
+const std::string contact_script = std::string(ROTBENCH_SOURCE_DIR) + "/tests/clients/contact_client.py";
 
 // Loads a client of the contact scenes behind the test script (with a fault when given); its id.
 std::string contact_client(const fs::path& dir, const std::string& id, const std::string& fault = "") {
     fs::create_directories(dir);
     const fs::path file = dir / (id + ".toml");
-    std::string program = "\"python3\", \"" + script + "\"";
+    std::string program = "\"python3\", \"" + contact_script + "\"";
     if (!fault.empty()) program += ", \"" + fault + "\"";
     write(file, "id = \"" + id + "\"\nprogram = [" + program + "]\nscenes = [\"sphere_pair\", \"ellipsoid_pair\"]\nclaims = \"direct\"\n");
     return load_client(file.string());

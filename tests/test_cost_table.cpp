@@ -14,7 +14,7 @@ using namespace rotbench;
 
 namespace {
 
-std::filesystem::path fresh_dir(const std::string& name) {
+std::filesystem::path fresh_cost_dir(const std::string& name) {
     const auto dir = std::filesystem::temp_directory_path() / (name + "_" + std::to_string(::getpid()));
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
@@ -37,7 +37,7 @@ const char* cost_csv =
 }  // namespace
 
 TEST_CASE("the cost section shows for every scheme its times and instructions and limits and ratios and the repeatability") {
-    const auto dir = fresh_dir("rotbench_cost_table");
+    const auto dir = fresh_cost_dir("rotbench_cost_table");
     write_file_atomically(dir / "cost.csv", cost_csv);
     const std::string md = cost_section(read_cost_table(dir), dir);
     CHECK(md.find("| direct | 20.0 | 2.0 % | 80.0 | 3.0 % | 4.00x | 1.00 |") != std::string::npos);
@@ -66,14 +66,14 @@ TEST_CASE("the cost section shows for every scheme its times and instructions an
 }
 
 TEST_CASE("without cost.csv the report says how to measure it") {
-    const auto dir = fresh_dir("rotbench_cost_absent");
+    const auto dir = fresh_cost_dir("rotbench_cost_absent");
     CHECK_FALSE(read_cost_table(dir).has_value());
     CHECK(cost_section(std::nullopt, dir).find("`benchmarks/cost.py BUILD " + dir.string()) != std::string::npos);
     std::filesystem::remove_all(dir);
 }
 
 TEST_CASE("a hand-edited cost.csv with a field that is not a number is bad input naming the file, line and column") {
-    const auto dir = fresh_dir("rotbench_cost_edited");
+    const auto dir = fresh_cost_dir("rotbench_cost_edited");
     std::string edited = cost_csv;
     edited.replace(edited.find("zvw,1000000,40,"), 15, "zvw,1000000,4O,");
     write_file_atomically(dir / "cost.csv", edited);
@@ -82,7 +82,7 @@ TEST_CASE("a hand-edited cost.csv with a field that is not a number is bad input
 }
 
 TEST_CASE("the granular step beside LIGGGHTS: per phase, each code's CPU per sphere-step and their ratio, and no section without its table") {
-    const auto dir = fresh_dir("rotbench_granular_speed");
+    const auto dir = fresh_cost_dir("rotbench_granular_speed");
     CHECK(read_granular_speed(dir).empty());
     CHECK(granular_speed_section({}).empty());
     write_file_atomically(dir / "granular_speed.csv",

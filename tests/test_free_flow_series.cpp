@@ -23,23 +23,23 @@ namespace {
 
 constexpr double one_step_round_off = 10.0 * std::numeric_limits<double>::epsilon();
 
-struct Case {
+struct FlowCase {
     Vec3 inertia, l;  // body-frame angular momentum
     Quat q;
 };
 
 // The angle between the series and Odeint, or -1 when the series declined (the caller then
 // takes the closed form).
-double deviation(const Case& c, double dt) {
+double deviation(const FlowCase& c, double dt) {
     const FreeFlowStep<double> series = free_flow_series<double>(c.inertia, c.q, c.l, dt);
     if (!series.converged) return -1.0;
     return rotation_angle_between(series.q.normalized(), testing::odeint_orientation(c.inertia, c.q, c.l, dt));
 }
 
-std::vector<Case> random_cases(std::uint64_t seed, int count, double moment_spread) {
+std::vector<FlowCase> random_cases(std::uint64_t seed, int count, double moment_spread) {
     std::mt19937_64 rng(seed);
     std::uniform_real_distribution<double> u(-1.0, 1.0), moment(1.0, 1.0 + moment_spread);
-    std::vector<Case> cases;
+    std::vector<FlowCase> cases;
     for (int i = 0; i < count; ++i)
         cases.push_back({Vec3(moment(rng), moment(rng), moment(rng)), Vec3(u(rng), u(rng), u(rng)),
                          Quat(u(rng), u(rng), u(rng), u(rng)).normalized()});
@@ -69,7 +69,7 @@ TEST_CASE("free flow series: one step agrees with Odeint within one step's round
     const double dts[] = {1e-6, 1e-4, 1e-3, 1e-2, 0.1, 0.3, 1.0, 3.0};
     for (const double spread : {2.0, 0.1, 10.0}) {
         int accepted = 0, total = 0;
-        for (const Case& c : random_cases(20261202, 200, spread))
+        for (const FlowCase& c : random_cases(20261202, 200, spread))
             for (const double dt : dts) {
                 const double d = deviation(c, dt);
                 ++total;
@@ -128,7 +128,7 @@ TEST_CASE("free flow series: exact motions") {
 
 TEST_CASE("free flow series: a step too long for the series is declined, not approximated") {
     // About two periods of the body motion: the Taylor series of w cannot converge there.
-    const Case c{Vec3(1.0, 2.0, 3.0), Vec3(0.5, 0.6, 0.7), Quat::Identity()};
+    const FlowCase c{Vec3(1.0, 2.0, 3.0), Vec3(0.5, 0.6, 0.7), Quat::Identity()};
     const double period = FreeRigidBody(c.inertia, c.q, c.l.cwiseQuotient(c.inertia)).period();
     for (const double dt : {2.0 * period, std::numeric_limits<double>::infinity(), std::numeric_limits<double>::quiet_NaN()})
         CHECK_FALSE(free_flow_series<double>(c.inertia, c.q, c.l, dt).converged);
@@ -153,8 +153,8 @@ TEST_CASE("exact_splitting: a pack whose bodies take the series and the closed f
 TEST_CASE("symmetric top step: one step agrees with Odeint within one step's round-off, about each axis") {
     int symmetric = 0;
     for (int axis = 0; axis < 3; ++axis)
-        for (const Case& random : random_cases(20261203 + axis, 50, 2.0)) {
-            Case c = random;
+        for (const FlowCase& random : random_cases(20261203 + axis, 50, 2.0)) {
+            FlowCase c = random;
             c.inertia[(axis + 2) % 3] = c.inertia[(axis + 1) % 3];  // the two moments beside the axis equal
             for (const double dt : {1e-6, 1e-3, 0.1, 1.0, 3.0}) {
                 const Vec3 momentum = to_world(c.q, c.l);

@@ -67,7 +67,7 @@ private:
     int jobs_ = core_count();
 };
 
-const RegisterVerb<AdviseVerb> registration("advise", "which scheme at what dt for your particle and contact (advice.json)");
+const RegisterVerb<AdviseVerb> advise_verb("advise", "which scheme at what dt for your particle and contact (advice.json)");
 
 }  // namespace
 }  // namespace rotbench

@@ -99,7 +99,7 @@ private:
     CLI::App* check_ = nullptr;
 };
 
-const RegisterVerb<ClientVerb> registration("client", "for adapter authors: write a run's scene.json, or check a client's output");
+const RegisterVerb<ClientVerb> client_verb("client", "for adapter authors: write a run's scene.json, or check a client's output");
 
 }  // namespace
 }  // namespace rotbench

@@ -82,7 +82,7 @@ private:
     bool overwrite_ = false;
 };
 
-const RegisterVerb<CompareVerb> registration("compare", "regressions of NEW against BASE: accuracy, orders, stability, cost");
+const RegisterVerb<CompareVerb> compare_verb("compare", "regressions of NEW against BASE: accuracy, orders, stability, cost");
 
 }  // namespace
 }  // namespace rotbench

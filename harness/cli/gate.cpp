@@ -158,7 +158,7 @@ private:
     bool overwrite_ = false, quick_ = false;
 };
 
-const RegisterVerb<GateVerb> registration("gate", "hold every scheme to its claims and the checks of a gate file; exit 1 if any fails");
+const RegisterVerb<GateVerb> gate_verb("gate", "hold every scheme to its claims and the checks of a gate file; exit 1 if any fails");
 
 }  // namespace
 }  // namespace rotbench

@@ -123,7 +123,7 @@ private:
     bool markdown_ = false, metrics_ = false;
 };
 
-const RegisterVerb<ListVerb> registration("list", "list the registered schemes and scenes");
+const RegisterVerb<ListVerb> list_verb("list", "list the registered schemes and scenes");
 
 }  // namespace
 }  // namespace rotbench

@@ -33,7 +33,7 @@ private:
     bool overwrite_ = false;
 };
 
-const RegisterVerb<MergeVerb> registration("merge", "combine the outputs of run --shard K/N, or of whole runs, into one run's outputs");
+const RegisterVerb<MergeVerb> merge_verb("merge", "combine the outputs of run --shard K/N, or of whole runs, into one run's outputs");
 
 }  // namespace
 }  // namespace rotbench

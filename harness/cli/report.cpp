@@ -44,7 +44,7 @@ private:
     bool overwrite_ = false;
 };
 
-const RegisterVerb<ReportVerb> registration("report", "re-render report.md and its plots from the run store in DIR");
+const RegisterVerb<ReportVerb> report_verb("report", "re-render report.md and its plots from the run store in DIR");
 
 }  // namespace
 }  // namespace rotbench

@@ -134,7 +134,7 @@ private:
     CLI::App* command_ = nullptr;
 };
 
-const RegisterVerb<RunVerb> registration("run", "run schemes on scenes and write results.csv and report.md");
+const RegisterVerb<RunVerb> run_verb("run", "run schemes on scenes and write results.csv and report.md");
 
 }  // namespace
 }  // namespace rotbench

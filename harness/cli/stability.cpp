@@ -76,7 +76,7 @@ private:
     int jobs_ = core_count();
 };
 
-const RegisterVerb<StabilityVerb> registration("stability", "stability limits: measured, from eigenvalues, and Peng et al.'s");
+const RegisterVerb<StabilityVerb> stability_verb("stability", "stability limits: measured, from eigenvalues, and Peng et al.'s");
 
 }  // namespace
 }  // namespace rotbench

@@ -32,7 +32,7 @@ private:
     bool untimed_ = false;
 };
 
-const RegisterVerb<WorkerVerb> registration("__run", "(internal) make one run and print it as a record");
+const RegisterVerb<WorkerVerb> worker_verb("__run", "(internal) make one run and print it as a record");
 
 }  // namespace
 }  // namespace rotbench
