@@ -176,3 +176,21 @@ TEST_CASE("advise: a particle too light to be a body ends in bounded time: its r
     const RunResult r = made({"particle_contact", "direct", scene->quick_dts().front(), 20.0 * period, particle});
     CHECK_THAT(r.failure, Catch::Contains("Odeint reference: more than") && Catch::Contains("too stiff or too ill-scaled"));
 }
+
+TEST_CASE("advise: a particle whose reference cannot be computed runs no scheme, and says why once") {
+    // The reference is the particle's: before it was computed first, every scheme's ladder failed
+    // on it rung by rung (1 min 36 s at two jobs for this particle, "no stable dt found" for one).
+    const Particle particle{Eigen::Vector3d(1, 2, 3), 1e-300, 1e6, 0, 10, 0};
+    std::ostringstream out, err;
+    Executor executor(out, err, {.run = {.measure_time = false}, .quiet = true});
+    const auto schemes = SchemeRegistry::instance().ids();
+    const Advice a = advise(executor, particle, 1e-3, schemes, false);
+    CHECK(a.recommendations.empty());
+    CHECK_THAT(a.verdict, Catch::Contains("reference could not be computed") && Catch::Contains("Odeint reference: more than"));
+    REQUIRE(a.not_recommended.size() == schemes.size());
+    for (const auto& [scheme, why] : a.not_recommended) {
+        INFO(scheme << ": " << why);
+        const bool sound = SchemeRegistry::instance().at(scheme, "scheme").extra.sound;
+        CHECK(why == (sound ? "not run: the particle's reference could not be computed" : "a control (sound = false): never recommended"));
+    }
+}

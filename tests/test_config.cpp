@@ -94,6 +94,19 @@ TEST_CASE("reference and trajectory exports have the contract columns") {
     fs::remove_all(dir);
 }
 
+TEST_CASE("a reference Odeint cannot compute is one line and exit 1, and nothing is written") {
+    const fs::path dir = fresh_dir("no_reference");
+    fs::create_directories(dir);
+    // 1e-300 kg with moments of order 1: contact periods of 1e-153 s, past the reference's budget of steps.
+    const Cli r = cli({"reference", "--scene", "particle_contact", "--set", "mass=1e-300", "--set", "inertia=1,2,3", "--t-end", "2.7e-152",
+                       "--samples", "48", "--out", (dir / "ref.csv").string()});
+    CHECK(r.status == 1);
+    CHECK(one_line(r.err));
+    CHECK_THAT(r.err, Catch::Contains("no reference for particle_contact: Odeint reference: more than"));
+    CHECK_FALSE(fs::exists(dir / "ref.csv"));
+    fs::remove_all(dir);
+}
+
 TEST_CASE("TOML text is made ASCII before Debian's toml++ 3.3.0 reads it, or refused with line and column") {
     const auto message = [](const std::string& text) -> std::string {
         try {

@@ -4,6 +4,8 @@
 
 #include "harness/analysis/median.hpp"
 #include "harness/analysis/order_fit.hpp"
+#include "harness/exec/interrupt.hpp"
+#include "harness/exec/reference.hpp"
 #include "harness/scenes/stability_probe.hpp"
 
 #include <algorithm>
@@ -90,6 +92,18 @@ std::string reach(Ladder& ladder, double tolerance, double t_end, std::string& e
         if (t_end / next > advice_max_steps) return fmt::format("needs dt = {:.3g} s, {:.3g} steps over {:g} s", next, t_end / next, t_end);
         extrapolated = fmt::format(" (after extrapolating with order {:.2f})", fit.order);
         ladder.add(next);
+    }
+    return "";
+}
+
+// Why the particle's reference cannot be computed at dt over t_end, or "". It is the particle's,
+// not a scheme's: one that fails at the first rung's step would fail every scheme's ladder, rung
+// by rung, each up to its budget (minutes for an ill-scaled particle such as m = 1e-300 kg).
+std::string reference_failure(const Scene& scene, double dt, double t_end) {
+    try {
+        make_reference(scene, dt, step_count(t_end, dt));
+    } catch (const std::exception& e) {
+        return e.what();
     }
     return "";
 }
@@ -233,6 +247,12 @@ Advice advise(Executor& executor, const Particle& particle, double tolerance, co
     for (const auto& s : schemes) {
         if (SchemeRegistry::instance().at(s, "scheme").extra.sound) sound.push_back(s);
         else a.not_recommended.push_back({s, "a control (sound = false): never recommended"});
+    }
+    if (const std::string why = reference_failure(*probe_scene, advice_safety * a.dt_peng, a.t_end); !why.empty()) {
+        if (interrupt_signal()) return a;  // the verb says it was interrupted
+        a.verdict = "No scheme can be judged: this particle's reference could not be computed (" + why + ").";
+        for (const auto& s : sound) a.not_recommended.push_back({s, "not run: the particle's reference could not be computed"});
+        return a;
     }
     std::vector<Outcome> outcomes(sound.size());
     executor.for_each(sound.size(), [&](std::size_t i) { outcomes[i] = advise_one(executor, probe, a.params, a.t_end, tolerance, sound[i], verify); });

@@ -63,7 +63,14 @@ public:
             throw InputError("--scene " + o_.scene + ": a granular scene has no reference trajectory (its schemes are compared with "
                              "each other); rotbench trajectory exports a scheme's");
         o_.check();
-        o_.write(reference_states(*scene, o_.samples), how.out);
+        std::vector<std::vector<double>> rows;
+        try {
+            rows = reference_states(*scene, o_.samples);
+        } catch (const std::runtime_error& e) {  // Odeint's budget, a non-finite state: the scene's, not rotbench's
+            how.err << "rotbench: no reference for " << o_.scene << ": " << e.what() << "; nothing written\n";
+            return 1;
+        }
+        o_.write(rows, how.out);
         return 0;
     }
 
