@@ -142,15 +142,18 @@ TEST_CASE("contact clients: the stability plan searches a client only, on the sc
     fs::remove_all(dir);
 }
 
-TEST_CASE("contact clients: LAMMPS's, LIGGGHTS's and Yade's linear contacts have direct's limits on sphere_pair, undamped and damped",
+TEST_CASE("contact clients: LAMMPS's, LIGGGHTS's, Yade's and Kratos's linear contacts have direct's limits on sphere_pair, undamped and damped",
           "[slow]") {
-    // Debian's lammps, liggghts and yade (./setup.sh test installs them); about three minutes, at
-    // two of the study's four damping ratios (docs/findings.md has all four). All
-    // are velocity Verlet (Yade's leapfrog is the same map) on the same linear law, as
-    // benchmarks/contact_frequencies.py checks (docs/findings.md); LIGGGHTS's shorter lever arm
-    // (0.07 % off in frequency) and Yade's first shear increment are far inside the search's bracket.
-    for (const char* file :
-         {"/examples/clients/lammps/contact.toml", "/examples/clients/liggghts/contact.toml", "/examples/clients/yade/contact.toml"}) {
+    // Debian's lammps, liggghts and yade, Kratos's wheels in .venv (./setup.sh test installs them);
+    // about four minutes, at two of the study's four damping ratios (docs/findings.md has all four).
+    // All are velocity Verlet (Yade's leapfrog is the same map; Kratos's Symplectic_Euler is too, half
+    // a kick apart) on the same linear law, as benchmarks/contact_frequencies.py checks
+    // (docs/findings.md); LIGGGHTS's and Kratos's shorter lever arm (0.07 % off in frequency), Yade's
+    // first shear increment and Kratos's damping through a restitution coefficient (3e-4 off) are
+    // far inside the search's bracket.
+    for (const char* file : {"/examples/clients/lammps/contact.toml", "/examples/clients/liggghts/contact.toml",
+                             "/examples/clients/yade/contact.toml", "/examples/clients/kratos/contact.toml",
+                             "/examples/clients/kratos/contact_default.toml"}) {
         const std::string id = load_client(std::string(ROTBENCH_SOURCE_DIR) + file);
         for (double zeta : {0.0, 0.5}) {
             const RunResult r = made(search(id, zeta));
@@ -168,5 +171,8 @@ TEST_CASE("contact clients: LAMMPS's, LIGGGHTS's and Yade's linear contacts have
     write(dir / "scene.json", client_scene_json(*make_scene("ellipsoid_pair"), {"ellipsoid_pair", "x", 4e-4, 0.0}, 0.004, 10));
     CHECK(run_program({"/usr/bin/env", "-C", dir.string(), "python3", std::string(ROTBENCH_SOURCE_DIR) + "/examples/clients/lammps/lammps_contact.py",
                        "lammps", "scene.json", "trajectory.csv"}) == 3);
+    CHECK(run_program({"/usr/bin/env", "-C", dir.string(), std::string(ROTBENCH_SOURCE_DIR) + "/.venv/bin/python3",
+                       std::string(ROTBENCH_SOURCE_DIR) + "/examples/clients/kratos/kratos_contact.py", "Direct_Integration",
+                       "Velocity_Verlet", "scene.json", "trajectory.csv"}) == 3);
     fs::remove_all(dir);
 }
