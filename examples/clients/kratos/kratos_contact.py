@@ -66,6 +66,9 @@ if gamma > 1.0 / math.sqrt(2.0):
 # (sphere_strategy.py, coeff_of_rest_diff); Kratos inverts it by bisection to 1e-4 in gamma.
 restitution = 1.0 if gamma == 0 else math.exp(-gamma / math.sqrt(1 - gamma * gamma) * (
     math.pi - math.atan(2 * gamma * math.sqrt(1 - gamma * gamma) / (1 - 2 * gamma * gamma))))
+if gamma > 0 and restitution > 0.999:
+    decline("a damping ratio gamma = %s: its restitution coefficient %s is above 0.999, which Kratos takes as undamped"
+            % (g(gamma), g(restitution)))
 
 # The preload, as lammps_contact.py makes it.
 rel = [bodies[1]["velocity"][k] - bodies[0]["velocity"][k] for k in range(3)]
