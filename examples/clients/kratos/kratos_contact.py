@@ -16,9 +16,7 @@ adapter gives the e that Kratos's own map sends to gamma = c_n / (2 sqrt(meff k_
 damping is the scene's within that bisection (relative error 3e-4 at zeta = 0.1 on sphere_pair,
 1e-4 at 0.3 and 0.5; exact undamped). Coulomb's limit is 1e20 times the normal force.
 
-The pair is pressed together by a central pull, as lammps_contact.py does and says why: an
-overlap 3000 times the perturbation's amplitude, the positions written back shifted by half of it
-each. The pull is in the model file too, since Velocity_Verlet's first move takes the forces Kratos
+The pair is bonded by the central preload of ../contact_pair.py. The pull is in the model file too, since Velocity_Verlet's first move takes the forces Kratos
 computes while it initialises (without it the pair started with a kick that the stability search
 counted as growth: 0.59 of Peng's step undamped). Runs in the interpreter with the Kratos wheels
 (the client file names the project's venv); nothing is written outside the current directory.
@@ -35,48 +33,31 @@ rotational, translational, spec_path, out_path = sys.argv[1:5]
 if rotational not in ROTATIONAL or translational not in TRANSLATIONAL:
     sys.exit("kratos_contact.py: unknown scheme pair %s / %s" % (rotational, translational))
 os.environ["OMP_NUM_THREADS"] = "1"  # two bodies: nothing to share (kratos_dem.py)
+sys.dont_write_bytecode = True  # nothing left beside the adapter
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from contact_pair import decline, preload_overlap, sphere_pair  # noqa: E402
+
 spec = json.load(open(spec_path))
 g = lambda v: repr(float(v))
-
-
-def decline(why):
-    print("kratos_contact.py: " + why, file=sys.stderr)
-    sys.exit(3)
-
-
-bodies, contact, dt, steps = spec["bodies"], spec["contact"], spec["dt"], spec["steps"]
-for b in bodies:
-    if b["shape"]["kind"] != "sphere":
-        decline("the linear law acts between spheres, not a body of kind '%s'" % b["shape"]["kind"])
-normal = contact["normal"]
-if normal != [1.0, 0.0, 0.0] or any(abs(b["position"][1]) + abs(b["position"][2]) > 0 for b in bodies):
-    decline("the spheres must touch along x (the scene's normal is %s)" % normal)
+bodies, contact, radii, meff = sphere_pair(spec, "kratos_contact.py", "the linear law")
+dt, steps = spec["dt"], spec["steps"]
 kn, kt, cn, ct = (contact[k] for k in ("normal_stiffness", "tangential_stiffness", "normal_damping", "tangential_damping"))
 if kt != kn or ct != cn:
-    decline("Kratos's linear law with one material has k_t = k_n and c_t = c_n only when nu = 0; the scene has %s, %s" % (g(kt), g(ct)))
-m1, m2 = bodies[0]["mass"], bodies[1]["mass"]
-meff = m1 * m2 / (m1 + m2)
-radii = [b["shape"]["size"][0] for b in bodies]
+    decline("kratos_contact.py", "Kratos's linear law with one material has k_t = k_n and c_t = c_n only when nu = 0; the scene has %s, %s"
+            % (g(kt), g(ct)))
 equiv_radius = radii[0] * radii[1] / (radii[0] + radii[1])
 young = 2.0 * kn / (1.432 * math.pi * 0.31225 * equiv_radius)  # E* = E / 2 at nu = 0
 gamma = cn / (2.0 * math.sqrt(meff * kn))
 if gamma > 1.0 / math.sqrt(2.0):
-    decline("a damping ratio gamma = %s above 1/sqrt(2), where Kratos's restitution map changes branch" % g(gamma))
+    decline("kratos_contact.py", "a damping ratio gamma = %s above 1/sqrt(2), where Kratos's restitution map changes branch" % g(gamma))
 # The restitution coefficient whose gamma is the scene's, by Kratos's own map for the linear law
 # (sphere_strategy.py, coeff_of_rest_diff); Kratos inverts it by bisection to 1e-4 in gamma.
 restitution = 1.0 if gamma == 0 else math.exp(-gamma / math.sqrt(1 - gamma * gamma) * (
     math.pi - math.atan(2 * gamma * math.sqrt(1 - gamma * gamma) / (1 - 2 * gamma * gamma))))
 if gamma > 0 and restitution > 0.999:
-    decline("a damping ratio gamma = %s: its restitution coefficient %s is above 0.999, which Kratos takes as undamped"
+    decline("kratos_contact.py", "a damping ratio gamma = %s: its restitution coefficient %s is above 0.999, which Kratos takes as undamped"
             % (g(gamma), g(restitution)))
-
-# The preload, as lammps_contact.py makes it.
-rel = [bodies[1]["velocity"][k] - bodies[0]["velocity"][k] for k in range(3)]
-spin = [abs(bodies[0]["omega_world"][k]) * radii[0] + abs(bodies[1]["omega_world"][k]) * radii[1] for k in range(3)]
-amplitude = (math.sqrt(sum(v * v for v in rel)) + math.sqrt(sum(s * s for s in spin))) / math.sqrt(kn / meff)
-overlap = 3000.0 * amplitude
-if overlap > 0.01 * min(radii):
-    decline("the preload's overlap %s would be more than 1 %% of a radius" % g(overlap))
+overlap = preload_overlap(bodies, contact, radii, meff, "kratos_contact.py")
 force = kn * overlap
 shift = [0.5 * overlap, -0.5 * overlap]
 

@@ -10,15 +10,8 @@ history spring are the scene's stiffnesses, its dashpots the scene's: LAMMPS's a
 (meff = m1 m2 / (m1 + m2)), so gamma = c / meff with dampflag 1; LIGGGHTS's are set absolutely
 (`absolute_damping on`, gamman_abs = c_n, gammat_abs = c_t). The friction limit is the largest
 each takes (LAMMPS's xmu 10000; LIGGGHTS's coefficientFriction 1e4), far above any tangential
-force here. The scene's contact is bonded and a granular contact only pushes, so the adapter
-presses the spheres together: each is pulled toward the other along the line of their centres by
-a constant force F0 (fix addforce with variables), from an overlap F0 / Kn, the equilibrium of that
-pull and the spring, and writes the positions shifted back by half that overlap each. About that
-equilibrium the contact is the scene's as long as it stays closed: F0 is chosen so that the
-overlap is 3000 times the perturbation's amplitude, which the energy criterion of a stability
-search (growth by 1e6, amplitude by 1e3) does not reach. The pull is central, as the contact's
-push is, so the two cancel across the contact too (a pull fixed along x would buckle the pair:
-the pair's rotation grew 25-fold in energy per 100 steps of 1e-4 s, measured).
+force here. The bond is the central preload of ../contact_pair.py, each pull a `fix addforce`
+with variables.
 
 Neither code keeps a sphere's orientation. The adapter composes the rotations the code's own
 tangential history integrates, exp(dt w^(n+1/2)) with w^(n+1/2) = w^n + dt/2 T^n / I (fix
@@ -28,10 +21,13 @@ exit status 3. Python 3 stdlib only; everything is written in the current direct
 """
 import json
 import math
+import os
 import sys
 
 sys.dont_write_bytecode = True  # nothing left beside the adapter
-from lammps_common import dump_frames, run_lmp
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from contact_pair import decline, preload_overlap, sphere_pair  # noqa: E402
+from lammps_common import dump_frames, run_lmp  # noqa: E402
 
 code, spec_path, out_path = sys.argv[1], sys.argv[2], sys.argv[3]
 if code not in ("lammps", "liggghts"):
@@ -39,34 +35,13 @@ if code not in ("lammps", "liggghts"):
 spec = json.load(open(spec_path))
 g = lambda v: "%.17g" % v
 
-
-def decline(why):
-    print("lammps_contact.py: " + why, file=sys.stderr)
-    sys.exit(3)
-
-
-bodies, contact, dt, steps = spec["bodies"], spec["contact"], spec["dt"], spec["steps"]
-for b in bodies:
-    if b["shape"]["kind"] != "sphere":
-        decline("a granular pair style takes spheres, not a body of kind '%s'" % b["shape"]["kind"])
-    r, m = b["shape"]["size"][0], b["mass"]
-    if any(abs(i - 0.4 * m * r * r) > 1e-12 * i for i in b["inertia_body"]):
-        decline("the code gives a sphere the moment 0.4 m r^2 = %s, not %s" % (g(0.4 * m * r * r), b["inertia_body"]))
-normal = contact["normal"]
-if normal != [1.0, 0.0, 0.0] or any(abs(b["position"][1]) + abs(b["position"][2]) > 0 for b in bodies):
-    decline("the spheres must touch along x (the scene's normal is %s)" % normal)
+bodies, contact, radii, meff = sphere_pair(spec, "lammps_contact.py", "a granular pair style")
+for b, r in zip(bodies, radii):
+    if any(abs(i - 0.4 * b["mass"] * r * r) > 1e-12 * i for i in b["inertia_body"]):
+        decline("lammps_contact.py", "the code gives a sphere the moment 0.4 m r^2 = %s, not %s" % (g(0.4 * b["mass"] * r * r), b["inertia_body"]))
+dt, steps = spec["dt"], spec["steps"]
 kn, kt, cn, ct = (contact[k] for k in ("normal_stiffness", "tangential_stiffness", "normal_damping", "tangential_damping"))
-m1, m2 = bodies[0]["mass"], bodies[1]["mass"]
-meff = m1 * m2 / (m1 + m2)
-radii = [b["shape"]["size"][0] for b in bodies]
-
-# The perturbation's amplitude, |relative velocity at the contact| / sqrt(Kn / meff); the preload's overlap 3000 times it.
-rel = [bodies[1]["velocity"][k] - bodies[0]["velocity"][k] for k in range(3)]
-spin = [abs(bodies[0]["omega_world"][k]) * radii[0] + abs(bodies[1]["omega_world"][k]) * radii[1] for k in range(3)]
-amplitude = (math.sqrt(sum(v * v for v in rel)) + math.sqrt(sum(s * s for s in spin))) / math.sqrt(min(kn, kt) / meff)
-overlap = 3000.0 * amplitude
-if overlap > 0.01 * min(radii):
-    decline("the preload's overlap %s would be more than 1 %% of a radius" % g(overlap))
+overlap = preload_overlap(bodies, contact, radii, meff, "lammps_contact.py")
 force = kn * overlap
 shift = [0.5 * overlap, -0.5 * overlap]  # body 0 moves +x, body 1 -x into the overlap
 

@@ -6,10 +6,8 @@ usage: yade_contact.py scene.json trajectory.csv
 
 The spheres are ViscElMat with kn, ks, cn, cs given explicitly; Yade joins two materials' values as
 springs in series (1 / (1/a + 1/b)), so each sphere's are twice the scene's. The friction angle is
-atan(1e4), far above any tangential force here. As in LAMMPS's adapter the bond is made by a
-preload: each sphere is pulled toward the other along the line of their centres by F0 (a PyRunner
-adds it every step, before the integrator), held by an overlap F0 / k_n 3000 times the
-perturbation's amplitude. Yade puts the contact point in the middle of the overlap, so each sphere
+atan(1e4), far above any tangential force here. The bond is the central preload of
+../contact_pair.py (a PyRunner adds the pull every step, before the integrator). Yade puts the contact point in the middle of the overlap, so each sphere
 is made larger by half the overlap at the scene's own position: the contact point is then the
 scene's touching point, r from each centre, and the moments are set as given (a sphere shifted
 into the overlap instead would turn on a lever r - overlap/2: the tangential frequency 0.07 % low,
@@ -21,33 +19,18 @@ so for w), and at the first step sets v(-dt/2) = v0 - dt/2 F(0) / m. The orienta
 Python 3 stdlib only; the Yade script and its output stay in the current directory.
 """
 import json
-import math
+import os
 import sys
 
 sys.dont_write_bytecode = True  # nothing left beside the adapter
-from yade_common import NAME_TMP, run_yade
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from contact_pair import preload_overlap, sphere_pair  # noqa: E402
+from yade_common import NAME_TMP, run_yade  # noqa: E402
 
 spec_path, out_path = sys.argv[1], sys.argv[2]
 spec = json.load(open(spec_path))
-bodies, contact = spec["bodies"], spec["contact"]
-for b in bodies:
-    if b["shape"]["kind"] != "sphere":
-        print("yade_contact.py: a ViscElMat contact here is between spheres, not a body of kind '%s'" % b["shape"]["kind"], file=sys.stderr)
-        sys.exit(3)
-if contact["normal"] != [1.0, 0.0, 0.0] or any(abs(b["position"][1]) + abs(b["position"][2]) > 0 for b in bodies):
-    print("yade_contact.py: the spheres must touch along x", file=sys.stderr)
-    sys.exit(3)
-
-# The preload as in lammps_contact.py: an overlap 3000 times the perturbation's amplitude.
-radii = [b["shape"]["size"][0] for b in bodies]
-meff = bodies[0]["mass"] * bodies[1]["mass"] / (bodies[0]["mass"] + bodies[1]["mass"])
-rel = [bodies[1]["velocity"][k] - bodies[0]["velocity"][k] for k in range(3)]
-spin = [abs(bodies[0]["omega_world"][k]) * radii[0] + abs(bodies[1]["omega_world"][k]) * radii[1] for k in range(3)]
-stiffness = min(contact["normal_stiffness"], contact["tangential_stiffness"])
-overlap = 3000.0 * (math.sqrt(sum(v * v for v in rel)) + math.sqrt(sum(s * s for s in spin))) / math.sqrt(stiffness / meff)
-if overlap > 0.01 * min(radii):
-    print("yade_contact.py: the preload's overlap would be more than 1 % of a radius", file=sys.stderr)
-    sys.exit(3)
+bodies, contact, radii, meff = sphere_pair(spec, "yade_contact.py", "a ViscElMat contact here")
+overlap = preload_overlap(bodies, contact, radii, meff, "yade_contact.py")
 
 script = NAME_TMP + r'''
 import json
