@@ -148,9 +148,9 @@ TEST_CASE("contact clients: LAMMPS's, LIGGGHTS's, Yade's and Kratos's linear con
     // about four minutes, at two of the study's four damping ratios (docs/findings.md has all four).
     // All are velocity Verlet (Yade's leapfrog is the same map; Kratos's Symplectic_Euler is too, half
     // a kick apart) on the same linear law, as benchmarks/contact_frequencies.py checks
-    // (docs/findings.md); LIGGGHTS's and Kratos's shorter lever arm (0.07 % off in frequency), Yade's
-    // first shear increment and Kratos's damping through a restitution coefficient (3e-4 off) are
-    // far inside the search's bracket.
+    // (docs/findings.md); LIGGGHTS's shorter lever arm (0.07 % off in frequency), Yade's first shear
+    // increment and Kratos's damping through a restitution coefficient (3e-4 off) are far inside
+    // the search's bracket.
     for (const char* file : {"/examples/clients/lammps/contact.toml", "/examples/clients/liggghts/contact.toml",
                              "/examples/clients/yade/contact.toml", "/examples/clients/kratos/contact.toml",
                              "/examples/clients/kratos/contact_default.toml"}) {
