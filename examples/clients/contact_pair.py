@@ -12,28 +12,29 @@ Python 3 stdlib only; imported by lammps/lammps_contact.py, yade/yade_contact.py
 kratos/kratos_contact.py from the folder above theirs.
 """
 import math
+import os
 import sys
 
 
-def decline(adapter, why):  # the scene is not one this code can represent: exit 3
-    print("%s: %s" % (adapter, why), file=sys.stderr)
+def decline(why):  # a scene this code cannot represent: exit 3, in the adapter's name
+    print("%s: %s" % (os.path.basename(sys.argv[0]), why), file=sys.stderr)
     sys.exit(3)
 
 
-def sphere_pair(spec, adapter, law):
+def sphere_pair(spec, law):
     """The bodies, the contact, the radii and the reduced mass of a scene of two spheres touching
     along x; any other scene is declined, naming the code's `law`."""
     bodies, contact = spec["bodies"], spec["contact"]
     for b in bodies:
         if b["shape"]["kind"] != "sphere":
-            decline(adapter, "%s acts between spheres, not a body of kind '%s'" % (law, b["shape"]["kind"]))
+            decline("%s acts between spheres, not a body of kind '%s'" % (law, b["shape"]["kind"]))
     if contact["normal"] != [1.0, 0.0, 0.0] or any(abs(b["position"][1]) + abs(b["position"][2]) > 0 for b in bodies):
-        decline(adapter, "the spheres must touch along x (the scene's normal is %s)" % contact["normal"])
+        decline("the spheres must touch along x (the scene's normal is %s)" % contact["normal"])
     m1, m2 = bodies[0]["mass"], bodies[1]["mass"]
     return bodies, contact, [b["shape"]["size"][0] for b in bodies], m1 * m2 / (m1 + m2)
 
 
-def preload_overlap(bodies, contact, radii, meff, adapter):
+def preload_overlap(bodies, contact, radii, meff):
     """The preload's overlap: 3000 times the perturbation's amplitude, |relative velocity at the
     contact| / sqrt(k / meff) with the softer spring; declined past 1 % of a radius."""
     rel = [bodies[1]["velocity"][k] - bodies[0]["velocity"][k] for k in range(3)]
@@ -41,5 +42,5 @@ def preload_overlap(bodies, contact, radii, meff, adapter):
     stiffness = min(contact["normal_stiffness"], contact["tangential_stiffness"])
     overlap = 3000.0 * (math.sqrt(sum(v * v for v in rel)) + math.sqrt(sum(s * s for s in spin))) / math.sqrt(stiffness / meff)
     if overlap > 0.01 * min(radii):
-        decline(adapter, "the preload's overlap %r would be more than 1 %% of a radius" % overlap)
+        decline("the preload's overlap %r would be more than 1 %% of a radius" % overlap)
     return overlap

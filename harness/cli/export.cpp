@@ -66,6 +66,8 @@ public:
         std::vector<std::vector<double>> rows;
         try {
             rows = reference_states(*scene, o_.samples);
+        } catch (const InputError&) {
+            throw;  // bad input stays exit 2
         } catch (const std::runtime_error& e) {  // Odeint's budget, a non-finite state: the scene's, not rotbench's
             how.err << "rotbench: no reference for " << o_.scene << ": " << e.what() << "; nothing written\n";
             return 1;

@@ -1,8 +1,8 @@
 #include "harness/exec/client_run.hpp"
 
-#include "harness/exec/json_vec.hpp"
 #include "harness/exec/contact_client.hpp"
 #include "harness/exec/granular_client.hpp"
+#include "harness/exec/json_vec.hpp"
 #include "harness/exec/run_kinds.hpp"
 #include "harness/store/client.hpp"
 #include "harness/store/parse.hpp"
@@ -53,7 +53,6 @@ struct Scratch {
         fs::remove_all(path, ec);
     }
 };
-
 
 // The states a built-in scheme makes on the scene at the same step, as the rows a program writes.
 std::vector<Row> builtin_rows(const Scene& scene, const std::string& scheme_id, double dt, std::int64_t steps) {

@@ -8,7 +8,6 @@
 namespace rotbench {
 namespace {
 
-
 // Body i's state from its row at step n (the contact_trajectory_header's columns).
 void set_body(Bodies& b, std::size_t i, const TrajectoryRow& r) {
     b.position.set(i, Vec3(r[2], r[3], r[4]));

@@ -13,15 +13,15 @@ scene; another k_t is declined). Its dashpots are 2 gamma sqrt(meff K), one gamm
 (c_t = c_n in every contact scene), and gamma is not taken either: Kratos finds it from a
 restitution coefficient e by bisection to 1e-4 in gamma (and takes 0 above e = 0.999). The
 adapter gives the e that Kratos's own map sends to gamma = c_n / (2 sqrt(meff k_n)), so the
-damping is the scene's within that bisection (relative error 3e-4 at zeta = 0.1 on sphere_pair,
-1e-4 at 0.3 and 0.5; exact undamped). Coulomb's limit is 1e20 times the normal force.
+damping is the scene's within that bisection (docs/clients.md gives the error). Coulomb's limit is
+1e20 times the normal force.
 
 The pair is bonded by the central preload of ../contact_pair.py, the spheres made larger by half
 its overlap at the scene's positions (Kratos's contact point is mid-overlap). The pull is in the
 model file too, since Velocity_Verlet's first move takes the forces Kratos computes while it
-initialises (without it the pair started with a kick that the stability search counted as growth:
-0.59 of Peng's step undamped). Runs in the interpreter with the Kratos wheels (the client file
-names the project's venv); nothing is written outside the current directory.
+initialises (without it the pair starts with a kick, which the stability search counts as growth).
+Runs in the interpreter with the Kratos wheels (the client file names the project's venv); nothing
+is written outside the current directory.
 """
 import json
 import math
@@ -41,23 +41,23 @@ from contact_pair import decline, preload_overlap, sphere_pair  # noqa: E402
 
 spec = json.load(open(spec_path))
 g = lambda v: repr(float(v))
-bodies, contact, radii, meff = sphere_pair(spec, "kratos_contact.py", "the linear law")
+bodies, contact, radii, meff = sphere_pair(spec, "the linear law")
 dt, steps = spec["dt"], spec["steps"]
 kn, kt, cn, ct = (contact[k] for k in ("normal_stiffness", "tangential_stiffness", "normal_damping", "tangential_damping"))
 if kt != kn or ct != cn:
-    decline("kratos_contact.py", "Kratos's linear law with one material has k_t = k_n and c_t = c_n only when nu = 0; the scene has %s, %s"
+    decline("Kratos's linear law with one material has k_t = k_n and c_t = c_n only when nu = 0; the scene has %s, %s"
             % (g(kt), g(ct)))
 gamma = cn / (2.0 * math.sqrt(meff * kn))
 if gamma > 1.0 / math.sqrt(2.0):
-    decline("kratos_contact.py", "a damping ratio gamma = %s above 1/sqrt(2), where Kratos's restitution map changes branch" % g(gamma))
+    decline("a damping ratio gamma = %s above 1/sqrt(2), where Kratos's restitution map changes branch" % g(gamma))
 # The restitution coefficient whose gamma is the scene's, by Kratos's own map for the linear law
 # (sphere_strategy.py, coeff_of_rest_diff); Kratos inverts it by bisection to 1e-4 in gamma.
 restitution = 1.0 if gamma == 0 else math.exp(-gamma / math.sqrt(1 - gamma * gamma) * (
     math.pi - math.atan(2 * gamma * math.sqrt(1 - gamma * gamma) / (1 - 2 * gamma * gamma))))
 if gamma > 0 and restitution > 0.999:
-    decline("kratos_contact.py", "a damping ratio gamma = %s: its restitution coefficient %s is above 0.999, which Kratos takes as undamped"
+    decline("a damping ratio gamma = %s: its restitution coefficient %s is above 0.999, which Kratos takes as undamped"
             % (g(gamma), g(restitution)))
-overlap = preload_overlap(bodies, contact, radii, meff, "kratos_contact.py")
+overlap = preload_overlap(bodies, contact, radii, meff)
 force = kn * overlap
 # Kratos puts the contact point in the middle of the overlap: spheres larger by half of it, at the
 # scene's own positions, touch at the scene's point, r from each centre (as yade_contact.py does).
@@ -145,9 +145,8 @@ def where_forces_act(k):
     takes the forces before it moves, at x_n. Velocity_Verlet moves first, to x_n + dt v_n + dt^2/2
     a_n, with a_n the acceleration of x_n, found from the last step as Verlet makes it:
     a_(n-1) = 2 (x_n - x_(n-1) - dt v_(n-1)) / dt^2, a_n = 2 (v_n - v_(n-1)) / dt - a_(n-1). The pull
-    must be taken there too: taken at x_n it lags the contact's push by a step, and the largest
-    energy error of a run of sphere_pair fell at first order (0.17 of its energy at dt = 1e-4 s),
-    not second (0.035)."""
+    must be taken there too: taken at x_n it lags the contact's push by a step, and a run's energy
+    error falls at first order, not second (docs/clients.md)."""
     x = [[n.X, n.Y, n.Z] for n in nodes]
     v = [list(n.GetSolutionStepValue(KM.VELOCITY)) for n in nodes]
     history.append((x, v))

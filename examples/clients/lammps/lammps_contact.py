@@ -35,13 +35,13 @@ if code not in ("lammps", "liggghts"):
 spec = json.load(open(spec_path))
 g = lambda v: "%.17g" % v
 
-bodies, contact, radii, meff = sphere_pair(spec, "lammps_contact.py", "a granular pair style")
+bodies, contact, radii, meff = sphere_pair(spec, "a granular pair style")
 for b, r in zip(bodies, radii):
     if any(abs(i - 0.4 * b["mass"] * r * r) > 1e-12 * i for i in b["inertia_body"]):
-        decline("lammps_contact.py", "the code gives a sphere the moment 0.4 m r^2 = %s, not %s" % (g(0.4 * b["mass"] * r * r), b["inertia_body"]))
+        decline("the code gives a sphere the moment 0.4 m r^2 = %s, not %s" % (g(0.4 * b["mass"] * r * r), b["inertia_body"]))
 dt, steps = spec["dt"], spec["steps"]
 kn, kt, cn, ct = (contact[k] for k in ("normal_stiffness", "tangential_stiffness", "normal_damping", "tangential_damping"))
-overlap = preload_overlap(bodies, contact, radii, meff, "lammps_contact.py")
+overlap = preload_overlap(bodies, contact, radii, meff)
 force = kn * overlap
 shift = [0.5 * overlap, -0.5 * overlap]  # body 0 moves +x, body 1 -x into the overlap
 

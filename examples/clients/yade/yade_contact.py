@@ -7,11 +7,11 @@ usage: yade_contact.py scene.json trajectory.csv
 The spheres are ViscElMat with kn, ks, cn, cs given explicitly; Yade joins two materials' values as
 springs in series (1 / (1/a + 1/b)), so each sphere's are twice the scene's. The friction angle is
 atan(1e4), far above any tangential force here. The bond is the central preload of
-../contact_pair.py (a PyRunner adds the pull every step, before the integrator). Yade puts the contact point in the middle of the overlap, so each sphere
-is made larger by half the overlap at the scene's own position: the contact point is then the
-scene's touching point, r from each centre, and the moments are set as given (a sphere shifted
-into the overlap instead would turn on a lever r - overlap/2: the tangential frequency 0.07 % low,
-measured).
+../contact_pair.py (a PyRunner adds the pull every step, before the integrator). Yade puts the
+contact point in the middle of the overlap, so each sphere is made larger by half the overlap at
+the scene's own position: the contact point is then the scene's touching point, r from each
+centre, and the moments are set as given (a sphere shifted into the overlap instead would turn on
+a lever r - overlap/2: the tangential frequency 0.07 % low, measured).
 
 Yade's leapfrog keeps velocities at half steps; a PyRunner after the contact law and before the
 integrator writes each step's row with the whole-step values v(t) = v(t - dt/2) + dt/2 F(t) / m (and
@@ -29,8 +29,8 @@ from yade_common import NAME_TMP, run_yade  # noqa: E402
 
 spec_path, out_path = sys.argv[1], sys.argv[2]
 spec = json.load(open(spec_path))
-bodies, contact, radii, meff = sphere_pair(spec, "yade_contact.py", "a ViscElMat contact here")
-overlap = preload_overlap(bodies, contact, radii, meff, "yade_contact.py")
+bodies, contact, radii, meff = sphere_pair(spec, "a ViscElMat contact here")
+overlap = preload_overlap(bodies, contact, radii, meff)
 
 script = NAME_TMP + r'''
 import json
