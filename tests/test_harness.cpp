@@ -107,6 +107,20 @@ TEST_CASE("a scheme that fails is recorded and the sweep goes on") {
     CHECK_THAT(out.str(), !Catch::Contains("direct"));
 }
 
+TEST_CASE("a caught exception becomes the run's failure, except rotbench's own running out of memory") {
+    const auto caught = [](auto thrown, const std::string& scheme) {
+        try {
+            throw thrown;
+        } catch (...) {
+            return caught_failure(scheme);
+        }
+    };
+    CHECK(caught(std::runtime_error("plug-in bug"), "direct") == "threw: plug-in bug");
+    CHECK(caught(42, "direct") == "threw an exception that is not a std::exception");
+    // A built-in kernel allocates nothing: a bad_alloc during its run is the harness's, passed up to run_one.
+    CHECK_THROWS_AS(caught(std::bad_alloc(), "direct"), std::bad_alloc);
+}
+
 TEST_CASE("a damped scene whose energy runs away upwards is stopped there, long before the state overflows") {
     // test_explodes doubles |w| every step, so the kinetic energy grows 4x a step: it passes
     // E0 + 1e6 x the energy scale within log4(1e6) ~ 10 steps of the rotational energy

@@ -54,12 +54,8 @@ RunResult run_cost(const RunSpec& requested, const SchemeFactory& make) {
             ratios.push_back(a / b);
             scheme_seconds.push_back(a);
         }
-    } catch (const std::exception& e) {
-        if (rotbench_out_of_memory(e, requested.scheme)) throw;
-        result.failure = std::string("threw: ") + e.what();
-        return result;
     } catch (...) {
-        result.failure = "threw an exception that is not a std::exception";
+        result.failure = caught_failure(requested.scheme);
         return result;
     }
     if (interrupt_signal()) {

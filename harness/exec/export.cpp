@@ -74,11 +74,8 @@ RunResult run_states(const RunSpec& requested, const RunOptions& options) {
             if (n % stride == 0 || n == steps) result.series.push_back(state_row(*scene, t, state));
             return !interrupt_signal();
         });
-    } catch (const std::exception& e) {
-        if (rotbench_out_of_memory(e, requested.scheme)) throw;
-        result.failure = fmt::format("threw after step {}: {}", last, e.what());
     } catch (...) {
-        result.failure = fmt::format("threw after step {}", last);
+        result.failure = fmt::format("{} (after step {})", caught_failure(requested.scheme), last);
     }
     if (interrupt_signal()) result = {result.spec, {}, {}, true};
     return result;

@@ -1,6 +1,5 @@
 #include "harness/exec/interrupt.hpp"
 #include "harness/exec/run_kinds.hpp"
-#include "harness/exec/translation.hpp"
 #include "schemes/quaternion.hpp"
 
 #include <algorithm>
@@ -31,19 +30,12 @@ RunResult run_reversal(const RunSpec& requested) {
         // Back from where the forward steps ended: the forces of the last step are in b, and
         // the scheme keeps its memory, as a reversed integration does.
         for (std::int64_t n = steps - 1; n >= 0 && !failed && !interrupt_signal(); --n) {
-            translation_predict(b, -dt);
-            scheme->predict(b, -dt);
-            scene->evaluate_forces(b, static_cast<double>(n) * dt);
-            translation_correct(b, -dt);
-            scheme->correct(b, -dt);
+            dem_step(*scene, *scheme, b, -dt, static_cast<double>(n) * dt);
             failed = !finite(b);
         }
         if (failed) result.failure = "blew up before returning to t = 0";
-    } catch (const std::exception& e) {
-        result.failure = std::string("threw: ") + e.what();
-        failed = true;
-    } catch (...) {  // a plug-in may throw anything
-        result.failure = "threw an exception that is not a std::exception";
+    } catch (...) {
+        result.failure = caught_failure(requested.scheme);
         failed = true;
     }
     if (interrupt_signal()) {

@@ -277,8 +277,15 @@ RunResult run_one(const RunSpec& requested, const RunOptions& options) {
     return r;
 }
 
-bool rotbench_out_of_memory(const std::exception& e, const std::string& scheme) {
-    return dynamic_cast<const std::bad_alloc*>(&e) && !plugin_of(scheme);
+std::string caught_failure(const std::string& scheme) {
+    try {
+        throw;
+    } catch (const std::exception& e) {
+        if (dynamic_cast<const std::bad_alloc*>(&e) && !plugin_of(scheme)) throw;
+        return std::string("threw: ") + e.what();
+    } catch (...) {
+        return "threw an exception that is not a std::exception";
+    }
 }
 
 SchemeFactory registered_scheme(const std::string& id) { return SchemeRegistry::instance().at(id, "scheme").make; }
@@ -319,12 +326,8 @@ RunResult run_trajectory(const RunSpec& requested, const RunOptions& options, co
         if (timed) loop_seconds = thread_cpu_seconds() - loop_start, rotation_seconds = timed->seconds();
         observer.write(result);
         unstable = observer.unstable();
-    } catch (const std::exception& e) {
-        if (rotbench_out_of_memory(e, requested.scheme)) throw;
-        result.failure = std::string("threw: ") + e.what();
-        unstable = true;
-    } catch (...) {  // a plug-in may throw anything
-        result.failure = "threw an exception that is not a std::exception";
+    } catch (...) {
+        result.failure = caught_failure(requested.scheme);
         unstable = true;
     }
 

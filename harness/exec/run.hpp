@@ -36,9 +36,14 @@ void add_probe_pictures(const SceneProbe& probe, RunResult& r);
 RunResult run_one(const RunSpec& spec, const RunOptions& options = {});
 inline constexpr const char* out_of_memory_failure =
     "rotbench ran out of memory for this run's records (reference, series), not the scheme's failure";
-// Whether `e`, thrown while `scheme` ran, is rotbench's own out-of-memory, which the run loops
-// pass up to run_one: a built-in kernel allocates nothing, a plug-in's bad_alloc is its own.
-bool rotbench_out_of_memory(const std::exception& e, const std::string& scheme);
+// Called in a catch (...) around `scheme`'s steps: the failure its run records. rotbench's own
+// out-of-memory is rethrown to run_one (a built-in kernel allocates nothing; a plug-in's
+// bad_alloc is its own failure).
+std::string caught_failure(const std::string& scheme);
+
+// One step of the seed's loop: the translation's Velocity Verlet (eqs. 18-24) around the
+// scheme's two phases, the forces evaluated once, at t, between them.
+inline void dem_step(const Scene& scene, RotationScheme& scheme, Bodies& bodies, double dt, double t);
 
 // The loop shared by the measured run and the timing run. The scheme cannot reach the
 // scene: the one force evaluation per step happens here, and here it is counted.

@@ -3,6 +3,14 @@
 
 namespace rotbench {
 
+inline void dem_step(const Scene& scene, RotationScheme& scheme, Bodies& bodies, double dt, double t) {
+    translation_predict(bodies, dt);
+    scheme.predict(bodies, dt);
+    scene.evaluate_forces(bodies, t);
+    translation_correct(bodies, dt);
+    scheme.correct(bodies, dt);
+}
+
 template <class Observer>
 std::int64_t simulate(const Scene& scene, RotationScheme& scheme, Bodies& bodies, double dt, std::int64_t steps,
                       std::int64_t& force_evals, Observer&& observe, std::int64_t first_step) {
@@ -11,12 +19,8 @@ std::int64_t simulate(const Scene& scene, RotationScheme& scheme, Bodies& bodies
     scheme.start(bodies);
     for (std::int64_t n = first_step + 1; n <= first_step + steps; ++n) {
         const double t = static_cast<double>(n) * dt;
-        translation_predict(bodies, dt);
-        scheme.predict(bodies, dt);
-        scene.evaluate_forces(bodies, t);
+        dem_step(scene, scheme, bodies, dt, t);
         ++force_evals;
-        translation_correct(bodies, dt);
-        scheme.correct(bodies, dt);
         if (!observe(n, t, bodies)) return n;
     }
     return first_step + steps;

@@ -116,11 +116,7 @@ struct StepMap {
         Bodies b = bodies(s);
         auto scheme = SchemeRegistry::instance().at(scheme_id, "scheme").make();
         scheme->start(b);
-        translation_predict(b, dt);
-        scheme->predict(b, dt);
-        scene.evaluate_forces(b, dt);
-        translation_correct(b, dt);
-        scheme->correct(b, dt);
+        dem_step(scene, *scheme, b, dt, dt);
         return state(b);
     }
 };
