@@ -2,13 +2,16 @@
 // into directories that are new, empty or carry its manifest; never deletes or replaces a file
 // it did not write; refuses a second process writing into a directory in use; and starts
 // gnuplot without a shell, so any path works and none runs a command.
+#include "harness/core/fnv1a.hpp"
 #include "harness/store/output_dir.hpp"
+#include "harness/store/output_files.hpp"
 #include "tests/cli_helpers.hpp"
 
 #include <catch2/catch.hpp>
 #include <chrono>
 #include <csignal>
 #include <thread>
+#include <unistd.h>
 
 using namespace rotbench;
 using namespace rotbench::test;
@@ -225,4 +228,24 @@ TEST_CASE("outputs: a signal outside a sweep ends the command by that signal, st
     std::this_thread::sleep_for(std::chrono::milliseconds(1500));  // past the gnuplot's second
     CHECK(temporaries() == 0);
     fs::remove_all(dir);
+}
+
+TEST_CASE("outputs: an input read whole is held to its bound while it is read, not only by the size the file claims") {
+    // Files of /proc claim 0 bytes and hold more: the bound must stop the reading itself.
+    const std::string status = read_input_file("/proc/self/status", "", 1u << 20);
+    CHECK_THAT(status, Catch::Contains("Pid:"));
+    CHECK_THROWS_WITH(read_input_file("/proc/self/status", "", 10), "/proc/self/status: more than the 10 bytes this input may have");
+    CHECK(read_file("/proc/self/status").value_or("").find("Pid:") != std::string::npos);
+    CHECK_FALSE(read_file("/proc/self").has_value());  // a directory
+    CHECK_THROWS_WITH(read_input_file("/proc/self", "config", 10), "config /proc/self: not a regular file (a directory)");
+    // Hashed a block (64 KiB) at a time, a file of several blocks hashes as its text whole.
+    const fs::path file = fs::temp_directory_path() / ("rotbench_test_blocks_" + std::to_string(::getpid()));
+    std::string text;
+    for (int i = 0; text.size() < 200000; ++i) text += std::to_string(i * 7919) + (i % 13 ? "," : "\n");
+    write_file_atomically(file, text);
+    Fnv1a blocks;
+    CHECK(feed_file(file, blocks));
+    CHECK(blocks.hex() == Fnv1a().feed(text).hex());
+    fs::remove(file);
+    CHECK_FALSE(feed_file("/proc/self", blocks));  // a directory
 }

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <cstring>
 #include <fcntl.h>
+#include <functional>
 #include <fmt/format.h>
 #include <mutex>
 #include <random>
@@ -169,21 +170,38 @@ std::string read_program_output(const std::filesystem::path& file, const std::st
     return "";
 }
 
+namespace {
+
+// Hands what fd holds to `take` a block at a time, to its end or until `take` answers false;
+// false on a read error.
+bool read_blocks(int fd, const std::function<bool(std::string_view)>& take) {
+    char buffer[1 << 16];
+    for (;;) {
+        const ssize_t n = ::read(fd, buffer, sizeof buffer);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) return n == 0;
+        if (!take(std::string_view(buffer, static_cast<std::size_t>(n)))) return true;
+    }
+}
+
+// What fd holds, to its end or until it is longer than max_bytes; false on a read error.
+bool read_to_end(int fd, std::string& text, std::size_t max_bytes) {
+    return read_blocks(fd, [&](std::string_view block) {
+        text.append(block);
+        return text.size() <= max_bytes;
+    });
+}
+
+}  // namespace
+
 bool feed_file(const std::filesystem::path& path, Fnv1a& hash) {
     const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
     if (fd < 0) return false;
     struct stat st {};
-    bool ok = ::fstat(fd, &st) == 0 && S_ISREG(st.st_mode);
-    char buffer[1 << 16];
-    while (ok) {
-        const ssize_t n = ::read(fd, buffer, sizeof buffer);
-        if (n < 0 && errno == EINTR) continue;
-        if (n <= 0) {
-            ok = n == 0;
-            break;
-        }
-        hash.feed(std::string_view(buffer, static_cast<std::size_t>(n)));
-    }
+    const bool ok = ::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && read_blocks(fd, [&](std::string_view block) {
+                        hash.feed(block);
+                        return true;
+                    });
     ::close(fd);
     return ok;
 }
@@ -192,19 +210,10 @@ std::optional<std::string> read_file(const std::filesystem::path& path) {
     const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
     if (fd < 0) return std::nullopt;
     struct stat st {};
-    if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
-        ::close(fd);
-        return std::nullopt;
-    }
     std::string text;
-    char buffer[1 << 16];
-    for (;;) {
-        const ssize_t n = ::read(fd, buffer, sizeof buffer);
-        if (n < 0 && errno == EINTR) continue;
-        if (n <= 0) break;
-        text.append(buffer, static_cast<std::size_t>(n));
-    }
+    if (::fstat(fd, &st) == 0 && S_ISREG(st.st_mode)) read_to_end(fd, text, std::string().max_size());
     ::close(fd);
+    if (!S_ISREG(st.st_mode)) return std::nullopt;
     return text;
 }
 
@@ -237,22 +246,12 @@ std::string read_input_file(const std::filesystem::path& path, const std::string
         throw InputError(fmt::format("{}: {} bytes, more than the {} this input may have", where, st.st_size, max_bytes));
     }
     std::string text;
-    char buffer[1 << 16];
-    for (;;) {
-        const ssize_t n = ::read(fd, buffer, sizeof buffer);
-        if (n < 0 && errno == EINTR) continue;
-        if (n < 0) {
-            ::close(fd);
-            throw InputError(fmt::format("{}: cannot read the file ({})", where, std::strerror(errno)));
-        }
-        if (n == 0) break;
-        text.append(buffer, static_cast<std::size_t>(n));
-        if (text.size() > max_bytes) {  // it grew while being read
-            ::close(fd);
-            throw InputError(fmt::format("{}: more than the {} bytes this input may have", where, max_bytes));
-        }
-    }
+    const bool read = read_to_end(fd, text, max_bytes);
+    const int error = errno;
     ::close(fd);
+    if (!read) throw InputError(fmt::format("{}: cannot read the file ({})", where, std::strerror(error)));
+    if (text.size() > max_bytes)  // it grew while being read, or its size said nothing (/proc)
+        throw InputError(fmt::format("{}: more than the {} bytes this input may have", where, max_bytes));
     return text;
 }
 
