@@ -4,22 +4,16 @@
 #include "reports/granular_speed.hpp"
 #include "harness/store/output_files.hpp"
 #include "schemes/registry.hpp"
+#include "tests/cli_helpers.hpp"
 
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <sstream>
-#include <unistd.h>
 
 using namespace rotbench;
+using namespace rotbench::test;
 
 namespace {
-
-std::filesystem::path fresh_cost_dir(const std::string& name) {
-    const auto dir = std::filesystem::temp_directory_path() / (name + "_" + std::to_string(::getpid()));
-    std::filesystem::remove_all(dir);
-    std::filesystem::create_directories(dir);
-    return dir;
-}
 
 // Two schemes; the numbers are chosen so that every derived figure is a round one.
 // zvw's 2.1 % and exact_splitting's 4 % are one either side of the 3 % the report flags.
@@ -37,7 +31,8 @@ const char* cost_csv =
 }  // namespace
 
 TEST_CASE("the cost section shows for every scheme its times and instructions and limits and ratios and the repeatability") {
-    const auto dir = fresh_cost_dir("rotbench_cost_table");
+    const auto dir = fresh_dir("cost_table");
+    std::filesystem::create_directories(dir);
     write_file_atomically(dir / "cost.csv", cost_csv);
     const std::string md = cost_section(read_cost_table(dir), dir);
     CHECK(md.find("| direct | 20.0 | 2.0 % | 80.0 | 3.0 % | 4.00x | 1.00 |") != std::string::npos);
@@ -66,14 +61,16 @@ TEST_CASE("the cost section shows for every scheme its times and instructions an
 }
 
 TEST_CASE("without cost.csv the report says how to measure it") {
-    const auto dir = fresh_cost_dir("rotbench_cost_absent");
+    const auto dir = fresh_dir("cost_absent");
+    std::filesystem::create_directories(dir);
     CHECK_FALSE(read_cost_table(dir).has_value());
     CHECK(cost_section(std::nullopt, dir).find("`benchmarks/cost.py BUILD " + dir.string()) != std::string::npos);
     std::filesystem::remove_all(dir);
 }
 
 TEST_CASE("a hand-edited cost.csv with a field that is not a number is bad input naming the file, line and column") {
-    const auto dir = fresh_cost_dir("rotbench_cost_edited");
+    const auto dir = fresh_dir("cost_edited");
+    std::filesystem::create_directories(dir);
     std::string edited = cost_csv;
     edited.replace(edited.find("zvw,1000000,40,"), 15, "zvw,1000000,4O,");
     write_file_atomically(dir / "cost.csv", edited);
@@ -82,7 +79,8 @@ TEST_CASE("a hand-edited cost.csv with a field that is not a number is bad input
 }
 
 TEST_CASE("the granular step beside LIGGGHTS: per phase, each code's CPU per sphere-step and their ratio, and no section without its table") {
-    const auto dir = fresh_cost_dir("rotbench_granular_speed");
+    const auto dir = fresh_dir("granular_speed");
+    std::filesystem::create_directories(dir);
     CHECK(read_granular_speed(dir).empty());
     CHECK(granular_speed_section({}).empty());
     write_file_atomically(dir / "granular_speed.csv",

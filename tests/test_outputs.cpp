@@ -11,7 +11,6 @@
 #include <chrono>
 #include <csignal>
 #include <thread>
-#include <unistd.h>
 
 using namespace rotbench;
 using namespace rotbench::test;
@@ -239,13 +238,14 @@ TEST_CASE("outputs: an input read whole is held to its bound while it is read, n
     CHECK_FALSE(read_file("/proc/self").has_value());  // a directory
     CHECK_THROWS_WITH(read_input_file("/proc/self", "config", 10), "config /proc/self: not a regular file (a directory)");
     // Hashed a block (64 KiB) at a time, a file of several blocks hashes as its text whole.
-    const fs::path file = fs::temp_directory_path() / ("rotbench_test_blocks_" + std::to_string(::getpid()));
+    const fs::path dir = fresh_dir("blocks"), file = dir / "blocks.csv";
+    fs::create_directories(dir);
     std::string text;
     for (int i = 0; text.size() < 200000; ++i) text += std::to_string(i * 7919) + (i % 13 ? "," : "\n");
     write_file_atomically(file, text);
     Fnv1a blocks;
     CHECK(feed_file(file, blocks));
     CHECK(blocks.hex() == Fnv1a().feed(text).hex());
-    fs::remove(file);
+    fs::remove_all(dir);
     CHECK_FALSE(feed_file("/proc/self", blocks));  // a directory
 }
